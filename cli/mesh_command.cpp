@@ -1,0 +1,68 @@
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "progress_display.hpp"
+#include "vorocrust/vorocrust.hpp"
+
+namespace vorocrust::cli {
+
+int run_mesh(const MeshArgs& args) {
+  args.options.check();
+  std::error_code ec;
+  std::filesystem::create_directories(args.output_dir, ec);
+  if (ec || !std::filesystem::is_directory(args.output_dir)) {
+    throw Error(Error::Kind::Output, "cannot create the output folder: " + (ec ? ec.message() : "not a folder"),
+                {.file = args.output_dir});
+  }
+  const ThreadLimit threads(args.options.threads);
+  ProgressDisplay progress(args.quiet);
+
+  RunReport report;
+  report.command = args.command_line;
+  report.inputs = args.inputs;
+  report.options = args.options;
+  const std::filesystem::path report_path = std::filesystem::path(args.output_dir) / "report.json";
+  // report.json is written whatever the outcome, so a failed run still says why.
+  const auto finish = [&](const std::string& status, const std::string& message, int code) {
+    progress.finish();
+    report.timings = progress.timings();
+    report.status = status;
+    report.message = message;
+    write_file_atomically(report_path, run_report_json(report) + "\n");
+    return code;
+  };
+
+  std::optional<SurfaceMesh> mesh;
+  std::optional<MeshInfo> info;
+  std::optional<ValidationReport> validation;
+  try {
+    progress.begin("reading");
+    mesh = read_meshes({args.inputs.begin(), args.inputs.end()});
+    progress.begin("validating");
+    validation = validate(*mesh);
+    info = mesh_info(*mesh);
+    report.mesh = &*mesh;
+    report.input = &*info;
+    report.validation = &*validation;
+    for (const Finding& f : validation->findings) {
+      const bool overridden = f.code == "self-intersection" && args.allow_self_intersections;
+      if (f.severity == Finding::Severity::Error && !overridden) {
+        const std::string hint = f.code == "self-intersection" ? " (--allow-self-intersections to mesh anyway)" : "";
+        throw Error(Error::Kind::InvalidGeometry, f.message + hint);
+      }
+      if (!args.quiet && f.severity != Finding::Severity::Note) {
+        std::fprintf(stderr, "vorocrust: %s: %s\n", to_string(f.severity), f.message.c_str());
+      }
+    }
+    const MeshResult result = generate_mesh(*mesh, args.options, progress.callback());
+    return finish("ok", "", kOk);
+  } catch (const Error& e) {
+    finish(to_string(e.kind()), e.what(), exit_code_for(e.kind()));
+    throw;
+  }
+}
+
+}  // namespace vorocrust::cli

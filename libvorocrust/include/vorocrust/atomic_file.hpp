@@ -1,0 +1,18 @@
+// vorocrust/atomic_file.hpp — writing a file so that it is either complete or absent.
+//
+// The content goes to a temporary file beside the target, which is renamed over the target only
+// after everything was written and flushed. A failure (an exception from `write`, a full disk)
+// removes the temporary file and throws Error(Output); an earlier file at `path` stays intact.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <ostream>
+#include <string_view>
+
+namespace vorocrust {
+
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
+void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+}  // namespace vorocrust

@@ -1,0 +1,53 @@
+// vorocrust/validate.hpp — what is wrong with an input surface, said with where.
+//
+// validate() checks a mesh that read_mesh() accepted: faces with a repeated corner or zero area,
+// duplicate faces, faces whose orientation disagrees with a neighbour across a manifold edge,
+// closed shells turned inside out, and self-intersections (found with a bounding-volume tree
+// over the faces and decided by exact orientation predicates).
+//
+// Orientation problems are *fixed* in place (and reported as such) when `fix_orientation` is
+// set: each patch of faces joined by manifold edges is made consistent, and a closed shell is
+// turned so its normals point out of the volume it encloses. Everything else is only reported.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vorocrust/surface_mesh.hpp"
+
+namespace vorocrust {
+
+struct Finding {
+  enum class Severity {
+    Note,     // worth knowing, harmless
+    Fixed,    // was wrong, has been repaired in place
+    Warning,  // suspicious; meshing proceeds
+    Error,    // meshing refuses this input (self-intersections unless overridden)
+  };
+  Severity severity = Severity::Note;
+  std::string code;     // stable identifier, e.g. "self-intersection"
+  std::string message;  // one line, naming faces and source lines
+  std::size_t count = 0;                // how many instances in total
+  std::vector<std::size_t> faces;       // the faces concerned (at most max_listed)
+  std::vector<std::pair<std::size_t, std::size_t>> face_pairs;  // for pairwise findings
+};
+
+const char* to_string(Finding::Severity severity) noexcept;
+
+struct ValidationOptions {
+  bool fix_orientation = true;
+  bool check_self_intersections = true;
+  std::size_t max_listed = 20;  // faces or pairs named per finding
+};
+
+struct ValidationReport {
+  std::vector<Finding> findings;
+  bool has_errors() const;
+  const Finding* find(const std::string& code) const;
+};
+
+ValidationReport validate(SurfaceMesh& mesh, const ValidationOptions& options = {});
+
+}  // namespace vorocrust

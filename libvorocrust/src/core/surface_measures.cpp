@@ -1,0 +1,25 @@
+#include "core/surface_measures.hpp"
+
+namespace vorocrust {
+
+double surface_area(const SurfaceMesh& mesh, const std::vector<Index>& faces) {
+  double area = 0;
+  for (Index f : faces) {
+    const Triangle& t = mesh.triangles[f];
+    area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+  }
+  return area;
+}
+
+double enclosed_volume(const SurfaceMesh& mesh, const std::vector<Index>& faces) {
+  if (faces.empty()) return 0;
+  const Point origin = mesh.vertices[mesh.triangles[faces.front()][0]];
+  double six_volume = 0;
+  for (Index f : faces) {
+    const Triangle& t = mesh.triangles[f];
+    six_volume += (mesh.vertices[t[0]] - origin).dot((mesh.vertices[t[1]] - origin).cross(mesh.vertices[t[2]] - origin));
+  }
+  return six_volume / 6.0;
+}
+
+}  // namespace vorocrust

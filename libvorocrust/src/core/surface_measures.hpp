@@ -1,0 +1,17 @@
+// Internal: area and enclosed volume of a set of faces.
+#pragma once
+
+#include <vector>
+
+#include "vorocrust/surface_mesh.hpp"
+
+namespace vorocrust {
+
+double surface_area(const SurfaceMesh& mesh, const std::vector<Index>& faces);
+
+// Signed volume bounded by `faces` (positive when their normals point outward); meaningful for
+// a closed shell. Tetrahedra are taken from the shell's first vertex to keep the sum well
+// conditioned far from the origin.
+double enclosed_volume(const SurfaceMesh& mesh, const std::vector<Index>& faces);
+
+}  // namespace vorocrust

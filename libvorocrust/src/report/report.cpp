@@ -1,0 +1,98 @@
+#include "vorocrust/report.hpp"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "vorocrust/version.hpp"
+
+namespace vorocrust {
+
+namespace {
+
+using nlohmann::json;
+
+json finding_json(const Finding& f) {
+  json pairs = json::array();
+  for (const auto& [a, b] : f.face_pairs) pairs.push_back({a, b});
+  return {{"severity", to_string(f.severity)}, {"code", f.code},   {"message", f.message},
+          {"count", f.count},                  {"faces", f.faces}, {"face_pairs", pairs}};
+}
+
+json info_object(const std::vector<std::string>& inputs, const SurfaceMesh& mesh, const MeshInfo& info,
+                 const ValidationReport& validation) {
+  json components = json::array();
+  json volumes = json::array();
+  for (const ComponentInfo& c : info.components) {
+    components.push_back({{"faces", c.faces},
+                          {"vertices", c.vertices},
+                          {"edges", c.edges},
+                          {"boundary_edges", c.boundary_edges},
+                          {"non_manifold_edges", c.non_manifold_edges},
+                          {"closed", c.closed()},
+                          {"manifold", c.manifold()},
+                          {"genus", c.genus ? json(*c.genus) : json(nullptr)},
+                          {"volume", c.volume ? json(*c.volume) : json(nullptr)},
+                          {"area", c.area}});
+    if (c.volume) volumes.push_back(*c.volume);
+  }
+  json groups = json::array();
+  for (const GroupInfo& g : info.groups) groups.push_back({{"name", g.name}, {"source", g.source_file}, {"faces", g.faces}});
+  json findings = json::array();
+  for (const Finding& f : validation.findings) findings.push_back(finding_json(f));
+  const auto& box = info.bounding_box;
+  return {{"inputs", inputs},
+          {"vertices", info.vertices},
+          {"faces", info.faces},
+          {"edges", info.edges},
+          {"boundary_edges", info.boundary_edges},
+          {"non_manifold_edges", info.non_manifold_edges},
+          {"components", info.components.size()},
+          {"component_details", components},
+          {"genus", info.genus ? json(*info.genus) : json(nullptr)},
+          {"groups", groups},
+          {"regions", mesh.region_names},
+          {"bounding_box",
+           {{"min", {box.min().x(), box.min().y(), box.min().z()}},
+            {"max", {box.max().x(), box.max().y(), box.max().z()}},
+            {"diagonal", box.diagonal().norm()}}},
+          {"area", info.area},
+          {"shell_volumes", volumes},
+          {"findings", findings},
+          {"valid", !validation.has_errors()}};
+}
+
+}  // namespace
+
+std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh& mesh, const MeshInfo& info,
+                      const ValidationReport& validation, int indent) {
+  return info_object(inputs, mesh, info, validation).dump(indent);
+}
+
+std::string run_report_json(const RunReport& report, int indent) {
+  const MeshOptions& o = report.options;
+  json timings = json::array();
+  double total = 0;
+  for (const PhaseTiming& t : report.timings) {
+    timings.push_back({{"phase", t.name}, {"seconds", t.seconds}});
+    total += t.seconds;
+  }
+  json doc = {{"vorocrust_version", VOROCRUST_VERSION},
+              {"command", report.command},
+              {"inputs", report.inputs},
+              {"options",
+               {{"lipschitz", o.lipschitz},
+                {"sharp_angle_degrees", o.sharp_angle_degrees},
+                {"max_size", std::isfinite(o.max_size) ? json(o.max_size) : json(nullptr)},
+                {"seed", o.seed},
+                {"threads", o.threads}}},
+              {"status", report.status},
+              {"message", report.message},
+              {"timings", timings},
+              {"total_seconds", total}};
+  if (report.mesh && report.input && report.validation) {
+    doc["input"] = info_object(report.inputs, *report.mesh, *report.input, *report.validation);
+  }
+  return doc.dump(indent);
+}
+
+}  // namespace vorocrust

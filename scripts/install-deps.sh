@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package libvorocrust, its tools and its tests need. Idempotent: when
+# everything is present it changes nothing and contacts no server; otherwise it runs
+# `apt-get update` once and installs what is missing. Run as root.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git
+  # the library
+  libeigen3-dev libnanoflann-dev voro++-dev libopenmesh-dev libtbb-dev
+  # the command-line program
+  libcli11-dev nlohmann-json3-dev
+  # tests and benchmarks (the CLI tests run under Debian's own python3)
+  libgtest-dev libgmock-dev libbenchmark-dev python3
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: missing packages: ${missing[*]}; run this script as root" >&2
+  exit 1
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -q
+apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,191 @@
+#!/usr/bin/env python3
+"""The `vorocrust` program as a user meets it: exit codes, one-line messages, JSON, report.json.
+
+Run by CTest as: python3 test_cli.py VOROCRUST_BINARY MODELS_DIR TEST_DATA_DIR
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+BINARY, MODELS, DATA = sys.argv[1:4]
+del sys.argv[1:4]
+
+
+def run(*args, **kwargs):
+    return subprocess.run([BINARY, *args], capture_output=True, text=True, timeout=300, **kwargs)
+
+
+def model(name):
+    return os.path.join(MODELS, name)
+
+
+def bad_manifest():
+    with open(os.path.join(DATA, "bad", "expected.tsv")) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            name, kind, code, line_no, phrase = line.rstrip("\n").split("\t")
+            yield name, kind, int(code), int(line_no), phrase
+
+
+class Info(unittest.TestCase):
+    def test_head_json_counts(self):
+        r = run("info", model("openmeeg_HeadNNc3.obj"), "--json")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        doc = json.loads(r.stdout)
+        self.assertEqual(doc["faces"], 5350)
+        self.assertEqual(doc["vertices"], 2607)
+        self.assertEqual(doc["non_manifold_edges"], 150)
+        self.assertEqual(doc["boundary_edges"], 0)
+        self.assertEqual(doc["components"], 3)
+        self.assertEqual([g["name"] for g in doc["groups"]], ["cut", "north", "scalp", "skull", "south"])
+        self.assertEqual(sum(g["faces"] for g in doc["groups"]), 5350)
+        self.assertIsNone(doc["genus"])
+        self.assertTrue(doc["valid"])
+
+    def test_text_output_for_a_closed_model(self):
+        r = run("info", model("cgal_joint.off"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertRegex(r.stdout, r"faces\s+446")
+        self.assertRegex(r.stdout, r"genus\s+2")
+        self.assertRegex(r.stdout, r"component 0: 446 faces, genus 2, volume \d")
+        self.assertRegex(r.stdout, r"findings\s+none")
+
+    def test_volume_of_the_unit_box(self):
+        doc = json.loads(run("info", "--json", model("sandia_OneBox.obj")).stdout)
+        box = doc["bounding_box"]
+        size = [hi - lo for lo, hi in zip(box["min"], box["max"])]
+        self.assertAlmostEqual(doc["shell_volumes"][0], size[0] * size[1] * size[2], places=12)
+
+    def test_several_inputs_merge(self):
+        doc = json.loads(run("info", "--json", model("sandia_OneBox.obj"), model("cgal_joint.off")).stdout)
+        self.assertEqual(doc["faces"], 458)
+        self.assertEqual([g["name"] for g in doc["groups"]], ["sandia_OneBox", "cgal_joint"])
+        self.assertEqual(len(doc["shell_volumes"]), 2)
+
+
+class BadInput(unittest.TestCase):
+    def test_every_corpus_file_fails_with_its_code_and_message(self):
+        for name, kind, code, line_no, phrase in bad_manifest():
+            with self.subTest(file=name):
+                path = os.path.join(DATA, "bad", name)
+                r = run("info", path)
+                self.assertEqual(r.returncode, code, r.stderr)
+                self.assertEqual(r.stdout, "", "nothing but the error on failure")
+                lines = r.stderr.strip().splitlines()
+                self.assertEqual(len(lines), 1, r.stderr)
+                location = f"{path}:{line_no}: " if line_no else f"{path}: "
+                self.assertIn(f"vorocrust: {kind}: {location}", lines[0])
+                self.assertIn(phrase, lines[0])
+
+    def test_named_cases_from_the_issue(self):
+        cases = {"truncated_binary.stl": (3, "truncated binary STL"),
+                 "obj_index_past_end.obj": (3, "face refers to vertex 99"),
+                 "all_nan.off": (4, "not a finite number")}
+        for name, (code, phrase) in cases.items():
+            r = run("info", os.path.join(DATA, "bad", name))
+            self.assertEqual(r.returncode, code)
+            self.assertIn(phrase, r.stderr)
+
+    def test_missing_file(self):
+        r = run("info", "/nonexistent/model.obj")
+        self.assertEqual(r.returncode, 3)
+        self.assertIn("/nonexistent/model.obj: cannot open: no such file", r.stderr)
+
+    def test_self_intersection_is_invalid_geometry_with_pairs(self):
+        r = run("info", "--json", os.path.join(DATA, "invalid", "cube_pierced.off"))
+        self.assertEqual(r.returncode, 4)
+        doc = json.loads(r.stdout)
+        self.assertFalse(doc["valid"])
+        (finding,) = [f for f in doc["findings"] if f["code"] == "self-intersection"]
+        self.assertEqual(finding["severity"], "error")
+        # The piercing triangle (face 12) crosses the bottom and top diagonals: both triangles of each.
+        self.assertEqual(sorted(finding["face_pairs"]), [[0, 12], [1, 12], [2, 12], [3, 12]])
+        self.assertIn("invalid geometry", r.stderr)
+
+    def test_orientation_is_fixed_and_reported(self):
+        r = run("info", os.path.join(DATA, "invalid", "cube_flipped_face.off"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("fixed [inconsistent-orientation]: 1 faces flipped", r.stdout)
+
+
+class Usage(unittest.TestCase):
+    def test_no_subcommand_is_a_usage_error(self):
+        self.assertEqual(run().returncode, 2)
+
+    def test_unknown_option(self):
+        r = run("info", "--frobnicate", model("cgal_joint.off"))
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("usage error", r.stderr)
+
+    def test_help_names_every_mesh_option(self):
+        r = run("mesh", "--help")
+        self.assertEqual(r.returncode, 0)
+        for option in ("--output", "--seed", "--threads", "--quiet", "--lipschitz", "--sharp-angle", "--max-size"):
+            self.assertIn(option, r.stdout)
+        self.assertIn("Exit codes", run("--help").stdout)
+
+    def test_out_of_range_option(self):
+        with tempfile.TemporaryDirectory() as out:
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--lipschitz", "1.5")
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("--lipschitz must lie strictly between 0 and 1", r.stderr)
+
+
+class Mesh(unittest.TestCase):
+    def test_refuses_with_not_yet_and_writes_report(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "run")
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--seed", "7", "--threads", "1")
+            self.assertEqual(r.returncode, 6, r.stderr)
+            self.assertIn("not yet", r.stderr)
+            # Not a terminal: plain progress lines, no carriage returns.
+            self.assertIn("vorocrust: reading ...", r.stderr)
+            self.assertNotIn("\r", r.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            self.assertEqual(report["status"], "not yet implemented")
+            self.assertEqual(report["options"]["seed"], 7)
+            self.assertEqual(report["options"]["threads"], 1)
+            self.assertEqual(report["input"]["faces"], 446)
+            self.assertEqual([t["phase"] for t in report["timings"]][:2], ["reading", "validating"])
+            self.assertEqual(sorted(os.listdir(out)), ["report.json"])
+
+    def test_quiet_prints_only_the_error(self):
+        with tempfile.TemporaryDirectory() as out:
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--quiet")
+            self.assertEqual(r.returncode, 6)
+            self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+
+    def test_invalid_input_stops_before_meshing_and_says_why(self):
+        with tempfile.TemporaryDirectory() as out:
+            r = run("mesh", os.path.join(DATA, "invalid", "cube_pierced.off"), "-o", out)
+            self.assertEqual(r.returncode, 4)
+            self.assertIn("--allow-self-intersections", r.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                self.assertEqual(json.load(f)["status"], "invalid geometry")
+            r = run("mesh", os.path.join(DATA, "invalid", "cube_pierced.off"), "-o", out,
+                    "--allow-self-intersections")
+            self.assertEqual(r.returncode, 6)
+
+    def test_unreadable_input_still_leaves_a_report(self):
+        with tempfile.TemporaryDirectory() as out:
+            r = run("mesh", os.path.join(DATA, "bad", "truncated_binary.stl"), "-o", out)
+            self.assertEqual(r.returncode, 3)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            self.assertEqual(report["status"], "unreadable input")
+            self.assertIn("truncated binary STL", report["message"])
+
+    def test_unwritable_output_folder(self):
+        with tempfile.NamedTemporaryFile() as not_a_folder:
+            r = run("mesh", model("cgal_joint.off"), "-o", not_a_folder.name)
+            self.assertEqual(r.returncode, 5)
+            self.assertIn("output error", r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
