@@ -95,21 +95,10 @@ void walk_crease(Strata& s, const VertexEdges& ve, Index start_vertex, Index fir
 
 }  // namespace
 
-const char* to_string(StratumType type) noexcept {
-  switch (type) {
-    case StratumType::Corner: return "corner";
-    case StratumType::Crease: return "crease";
-    case StratumType::Patch: return "patch";
-  }
-  return "?";
-}
+namespace {
 
-Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle) {
-  Strata s;
+void compute_topology_and_normals(const SurfaceMesh& mesh, Strata& s) {
   s.topology = build_edge_topology(mesh);
-  const EdgeTopology& topo = s.topology;
-  const double cos_sharp = std::cos(sharp_angle);
-
   s.face_normals.resize(mesh.num_faces());
   for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
     const Triangle& t = mesh.triangles[f];
@@ -117,46 +106,27 @@ Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle) {
     const double len = n.norm();
     s.face_normals[f] = len > 0 ? Point(n / len) : Point::Zero();
   }
+}
 
-  s.sharp_edge.assign(topo.num_edges(), false);
-  for (std::size_t e = 0; e < topo.num_edges(); ++e) {
-    if (topo.valence(e) != 2) {
-      s.sharp_edge[e] = true;
-      continue;
-    }
-    const auto faces = topo.faces_of(e);
-    // Validation made faces across a manifold edge consistent, so their normals compare directly.
-    double cos_angle = s.face_normals[faces[0]].dot(s.face_normals[faces[1]]);
-    const auto [a, b] = topo.edges[e];
-    if (edge_direction(mesh.triangles[faces[0]], a, b) == edge_direction(mesh.triangles[faces[1]], a, b)) {
-      cos_angle = -cos_angle;  // inconsistent neighbours (a non-orientable patch): compare as lines
-    }
-    s.sharp_edge[e] = cos_angle < cos_sharp;
-  }
-
+// Creases, tangents, patches and incidences from sharp edges and corners already decided.
+void complete_strata(const SurfaceMesh& mesh, Strata& s, const std::vector<bool>& corner_by_vertex) {
+  const EdgeTopology& topo = s.topology;
   const VertexEdges ve = vertex_edges(mesh.num_vertices(), topo);
   s.vertex_corner.assign(mesh.num_vertices(), Strata::kNone);
+  s.corners.clear();
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
-    if (ve.of(v).empty()) continue;  // a vertex no face uses
-    std::vector<Index> sharp;
-    for (Index e : ve.of(v)) {
-      if (s.sharp_edge[e]) sharp.push_back(e);
-    }
-    bool corner = sharp.size() == 1 || sharp.size() > 2;
-    if (sharp.size() == 2) {
-      const Point a = (mesh.vertices[other_end(topo, sharp[0], v)] - mesh.vertices[v]).normalized();
-      const Point b = (mesh.vertices[other_end(topo, sharp[1], v)] - mesh.vertices[v]).normalized();
-      // The crease goes straight on when a and b are opposite; it turns by the angle between b and -a.
-      corner = (-a).dot(b) < cos_sharp;
-    }
-    if (!corner) corner = sector_spreads(mesh, s, ve, v, cos_sharp);
-    if (corner) {
+    std::size_t sharp = 0;
+    for (Index e : ve.of(v)) sharp += s.sharp_edge[e];
+    // A crease ends only at a corner: one sharp edge, or more than two, makes one.
+    const bool forced = sharp == 1 || sharp > 2;
+    if ((v < corner_by_vertex.size() && corner_by_vertex[v]) || forced) {
       s.vertex_corner[v] = static_cast<std::int32_t>(s.corners.size());
       s.corners.push_back(v);
     }
   }
 
   s.edge_crease.assign(topo.num_edges(), Strata::kNone);
+  s.creases.clear();
   for (Index c = 0; c < s.corners.size(); ++c) {
     const Index v = s.corners[c];
     for (Index e : ve.of(v)) {
@@ -167,11 +137,19 @@ Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle) {
     if (s.sharp_edge[e] && s.edge_crease[e] == Strata::kNone) walk_crease(s, ve, topo.edges[e][0], e, false);
   }
 
+  s.edge_tangent.assign(topo.num_edges(), Point::Zero());
+  for (const Crease& c : s.creases) {
+    for (std::size_t i = 0; i < c.edges.size(); ++i) {
+      const Point from = mesh.vertices[c.vertices[i]], to = mesh.vertices[c.vertices[(i + 1) % c.vertices.size()]];
+      s.edge_tangent[c.edges[i]] = (to - from).normalized();
+    }
+  }
+
   s.face_patch = label_face_components(mesh, topo, [&](std::size_t e) { return !s.sharp_edge[e]; }, s.num_patches);
 
-  s.corner_creases.resize(s.corners.size());
-  s.corner_patches.resize(s.corners.size());
-  s.crease_patches.resize(s.creases.size());
+  s.corner_creases.assign(s.corners.size(), {});
+  s.corner_patches.assign(s.corners.size(), {});
+  s.crease_patches.assign(s.creases.size(), {});
   for (Index k = 0; k < s.creases.size(); ++k) {
     const Crease& crease = s.creases[k];
     if (!crease.closed) {
@@ -195,6 +173,64 @@ Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle) {
   dedupe(s.corner_creases);
   dedupe(s.corner_patches);
   dedupe(s.crease_patches);
+}
+
+}  // namespace
+
+Strata build_strata(const SurfaceMesh& mesh, std::vector<bool> sharp_edge_by_topology_edge,
+                    std::vector<bool> corner_by_vertex) {
+  Strata s;
+  compute_topology_and_normals(mesh, s);
+  s.sharp_edge = std::move(sharp_edge_by_topology_edge);
+  s.sharp_edge.resize(s.topology.num_edges(), false);
+  for (std::size_t e = 0; e < s.topology.num_edges(); ++e) {
+    if (s.topology.valence(e) != 2) s.sharp_edge[e] = true;
+  }
+  complete_strata(mesh, s, corner_by_vertex);
+  return s;
+}
+
+Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle) {
+  Strata s;
+  compute_topology_and_normals(mesh, s);
+  const EdgeTopology& topo = s.topology;
+  const double cos_sharp = std::cos(sharp_angle);
+
+  s.sharp_edge.assign(topo.num_edges(), false);
+  for (std::size_t e = 0; e < topo.num_edges(); ++e) {
+    if (topo.valence(e) != 2) {
+      s.sharp_edge[e] = true;
+      continue;
+    }
+    const auto faces = topo.faces_of(e);
+    // Validation made faces across a manifold edge consistent, so their normals compare directly.
+    double cos_angle = s.face_normals[faces[0]].dot(s.face_normals[faces[1]]);
+    const auto [a, b] = topo.edges[e];
+    if (edge_direction(mesh.triangles[faces[0]], a, b) == edge_direction(mesh.triangles[faces[1]], a, b)) {
+      cos_angle = -cos_angle;  // inconsistent neighbours (a non-orientable patch): compare as lines
+    }
+    s.sharp_edge[e] = cos_angle < cos_sharp;
+  }
+
+  const VertexEdges ve = vertex_edges(mesh.num_vertices(), topo);
+  std::vector<bool> corner(mesh.num_vertices(), false);
+  for (Index v = 0; v < mesh.num_vertices(); ++v) {
+    if (ve.of(v).empty()) continue;  // a vertex no face uses
+    std::vector<Index> sharp;
+    for (Index e : ve.of(v)) {
+      if (s.sharp_edge[e]) sharp.push_back(e);
+    }
+    bool is_corner = sharp.size() == 1 || sharp.size() > 2;
+    if (sharp.size() == 2) {
+      const Point a = (mesh.vertices[other_end(topo, sharp[0], v)] - mesh.vertices[v]).normalized();
+      const Point b = (mesh.vertices[other_end(topo, sharp[1], v)] - mesh.vertices[v]).normalized();
+      // The crease goes straight on when a and b are opposite; it turns by the angle between b and -a.
+      is_corner = (-a).dot(b) < cos_sharp;
+    }
+    if (!is_corner) is_corner = sector_spreads(mesh, s, ve, v, cos_sharp);
+    corner[v] = is_corner;
+  }
+  complete_strata(mesh, s, corner);
   return s;
 }
 

@@ -14,13 +14,10 @@
 #include <vector>
 
 #include "core/edge_topology.hpp"
+#include "vorocrust/balls.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust {
-
-enum class StratumType : std::uint8_t { Corner = 0, Crease = 1, Patch = 2 };
-
-const char* to_string(StratumType type) noexcept;
 
 struct Crease {
   std::vector<Index> vertices;  // in order; a cycle does not repeat its first vertex
@@ -35,6 +32,7 @@ struct Strata {
   std::vector<Point> face_normals;     // unit; zero for degenerate faces
   std::vector<bool> sharp_edge;        // per edge
   std::vector<std::int32_t> edge_crease;   // per edge: its crease, or kNone when not sharp
+  std::vector<Point> edge_tangent;         // per edge: unit direction along its crease; zero if none
   std::vector<std::int32_t> vertex_corner; // per vertex: its corner, or kNone
   std::vector<Index> corners;              // vertex of each corner
   std::vector<Crease> creases;
@@ -49,5 +47,11 @@ struct Strata {
 
 // Detects the strata of `mesh` for the sharp angle theta# (radians, in (0, pi/2)).
 Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle);
+
+// The strata of `mesh` for sharp edges (by edge of its EdgeTopology) and corners decided already,
+// as after smoothing, which carries the input's features through subdivision. Edges with other
+// than two faces are sharp, and vertices with one or more than two sharp edges corners, anyway.
+Strata build_strata(const SurfaceMesh& mesh, std::vector<bool> sharp_edge_by_topology_edge,
+                    std::vector<bool> corner_by_vertex);
 
 }  // namespace vorocrust
