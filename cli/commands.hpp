@@ -21,6 +21,7 @@ struct MeshArgs {
   MeshOptions options;
   bool quiet = false;
   bool allow_self_intersections = false;
+  std::string stop_after;  // "" (everything) or "balls"
   std::vector<std::string> command_line;
 };
 

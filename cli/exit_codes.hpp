@@ -14,6 +14,7 @@ enum ExitCode : int {
   kOutputError = 5,
   kNotImplemented = 6,
   kCancelled = 7,
+  kConditionsViolated = 8,  // check-balls found balls that break a ball condition
 };
 
 inline int exit_code_for(Error::Kind kind) {
@@ -31,6 +32,6 @@ inline int exit_code_for(Error::Kind kind) {
 
 inline constexpr const char* kExitCodeHelp =
     "Exit codes: 0 success, 1 internal error, 2 usage error, 3 unreadable input, 4 invalid geometry, "
-    "5 cannot write output, 6 not yet implemented, 7 cancelled.";
+    "5 cannot write output, 6 not yet implemented, 7 cancelled, 8 ball conditions violated (check-balls).";
 
 }  // namespace vorocrust::cli

@@ -136,12 +136,13 @@ class Usage(unittest.TestCase):
 
 
 class Mesh(unittest.TestCase):
-    def test_refuses_with_not_yet_and_writes_report(self):
+    def test_makes_the_balls_then_says_not_yet_and_writes_report(self):
         with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "run")
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--seed", "7", "--threads", "1")
             self.assertEqual(r.returncode, 6, r.stderr)
             self.assertIn("not yet", r.stderr)
+            self.assertIn("--stop-after balls", r.stderr)
             # Not a terminal: plain progress lines, no carriage returns.
             self.assertIn("vorocrust: reading ...", r.stderr)
             self.assertNotIn("\r", r.stderr)
@@ -152,11 +153,13 @@ class Mesh(unittest.TestCase):
             self.assertEqual(report["options"]["threads"], 1)
             self.assertEqual(report["input"]["faces"], 446)
             self.assertEqual([t["phase"] for t in report["timings"]][:2], ["reading", "validating"])
-            self.assertEqual(sorted(os.listdir(out)), ["report.json"])
+            self.assertEqual(sorted(os.listdir(out)), ["balls.csv", "balls.vtk", "report.json"])
+            self.assertEqual(report["features"]["corners"], 12)
+            self.assertEqual(report["refinement"]["balls"]["corner"], 12)
 
     def test_quiet_prints_only_the_error(self):
         with tempfile.TemporaryDirectory() as out:
-            r = run("mesh", model("cgal_joint.off"), "-o", out, "--quiet")
+            r = run("mesh", model("sandia_OneBox.obj"), "-o", out, "--quiet")
             self.assertEqual(r.returncode, 6)
             self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
 
@@ -167,9 +170,13 @@ class Mesh(unittest.TestCase):
             self.assertIn("--allow-self-intersections", r.stderr)
             with open(os.path.join(out, "report.json")) as f:
                 self.assertEqual(json.load(f)["status"], "invalid geometry")
+            # Overridden, meshing goes on; the curve where the surfaces cross is no feature, so the
+            # balls cannot converge there, and the run ends with a message naming a face.
             r = run("mesh", os.path.join(DATA, "invalid", "cube_pierced.off"), "-o", out,
-                    "--allow-self-intersections")
-            self.assertEqual(r.returncode, 6)
+                    "--allow-self-intersections", "--stop-after", "balls")
+            self.assertEqual(r.returncode, 4, r.stderr)
+            self.assertIn("refinement cannot converge", r.stderr)
+            self.assertIn("cube_pierced.off line", r.stderr)
 
     def test_unreadable_input_still_leaves_a_report(self):
         with tempfile.TemporaryDirectory() as out:
@@ -182,9 +189,48 @@ class Mesh(unittest.TestCase):
 
     def test_unwritable_output_folder(self):
         with tempfile.NamedTemporaryFile() as not_a_folder:
-            r = run("mesh", model("cgal_joint.off"), "-o", not_a_folder.name)
+            r = run("mesh", model("sandia_OneBox.obj"), "-o", not_a_folder.name)
             self.assertEqual(r.returncode, 5)
             self.assertIn("output error", r.stderr)
+
+
+class Balls(unittest.TestCase):
+    def test_stop_after_balls_writes_csv_vtk_and_table_one(self):
+        with tempfile.TemporaryDirectory() as out:
+            r = run("mesh", model("sandia_OneBox.obj"), "-o", out, "--stop-after", "balls", "--seed", "3")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(os.path.join(out, "balls.csv")) as f:
+                rows = f.read().splitlines()
+            self.assertEqual(rows[0], "x,y,z,radius,stratum_type,stratum_index")
+            types = [row.split(",")[4] for row in rows[1:]]
+            self.assertEqual(types.count("corner"), 8)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            self.assertEqual(report["status"], "ok")
+            self.assertEqual(report["refinement"]["balls"]["total"], len(rows) - 1)
+            for row in ("corner_protection", "edge_protection", "surface_coverage", "fixing_c3_violations"):
+                self.assertGreaterEqual(report["refinement"]["seconds"][row], 0)
+            # Same seed, same balls.
+            with tempfile.TemporaryDirectory() as again:
+                run("mesh", model("sandia_OneBox.obj"), "-o", again, "--stop-after", "balls", "--seed", "3")
+                with open(os.path.join(again, "balls.csv")) as f:
+                    self.assertEqual(f.read().splitlines(), rows)
+
+    def test_sizing_file_bounds_radii_and_bad_sizing_names_the_line(self):
+        with tempfile.TemporaryDirectory() as out:
+            sizing = os.path.join(out, "sizing.txt")
+            with open(sizing, "w") as f:
+                f.write("# x y z size\n-10 -10 -10 0.05\n10 10 10 0.05\n")
+            r = run("mesh", model("sandia_OneBox.obj"), "-o", out, "--stop-after", "balls", "--sizing", sizing)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(os.path.join(out, "balls.csv")) as f:
+                radii = [float(row.split(",")[3]) for row in f.read().splitlines()[1:]]
+            self.assertLessEqual(max(radii), 0.05)
+            with open(sizing, "w") as f:
+                f.write("0 0 0 1\n1 1 oops 1\n")
+            r = run("mesh", model("sandia_OneBox.obj"), "-o", out, "--stop-after", "balls", "--sizing", sizing)
+            self.assertEqual(r.returncode, 3)
+            self.assertIn("sizing.txt:2: expected a z coordinate, found 'oops'", r.stderr)
 
 
 if __name__ == "__main__":

@@ -6,21 +6,36 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "vorocrust/balls.hpp"
 #include "vorocrust/progress.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust {
 
+// How far the pipeline runs.
+enum class Stage { Balls, Cells };
+
 struct MeshOptions {
-  double lipschitz = 0.25;             // L < 1: how fast ball radii may vary
-  double sharp_angle_degrees = 30.0;   // theta#: dihedral deviation that makes an edge sharp
+  double lipschitz = 0.25;  // L < 1: how fast ball radii may vary
+  // theta#: an edge whose faces' normals differ by more than this is a sharp crease. 30 degrees
+  // keeps every crease of the shared CAD models (fandisk, joint, bracket, hinge) while the
+  // tessellation rings of curved surfaces (22.5 degrees on sandia_torus) stay smooth; the paper
+  // uses 60 for smooth, coarsely tessellated models.
+  double sharp_angle_degrees = 30.0;
   double max_size = std::numeric_limits<double>::infinity();  // uniform sizing bound
-  std::uint64_t seed = 0;              // random seed; equal seeds give equal meshes
-  int threads = 0;                     // 0 = all hardware threads
+  std::filesystem::path sizing_file;  // optional: lines "x y z size", interpolated
+  // Rounds of adaptive Loop subdivision inside patches (paper 2.2 uses 6). Off by default: on
+  // cgal_fandisk it creates cone points that a fresh feature detection of the smoothed surface
+  // finds, which the features carried through smoothing lack.
+  int smoothing_iterations = 0;
+  Stage stop_after = Stage::Cells;
+  std::uint64_t seed = 0;  // random seed; equal seeds give equal meshes
+  int threads = 0;         // 0 = all hardware threads
 
   // Throws Error(Usage) naming the first option out of its range.
   void check() const;
@@ -31,11 +46,42 @@ struct PhaseTiming {
   double seconds = 0;
 };
 
-struct MeshResult {
-  std::vector<PhaseTiming> timings;
+// What the refinement did (paper Table 1 rows and the counts behind them).
+struct RefinementStats {
+  std::size_t balls[3] = {0, 0, 0};  // corner, crease, patch balls
+  std::size_t darts = 0;
+  std::size_t rejected_for_density = 0;
+  std::size_t subdivisions = 0;
+  std::size_t c1_shrinks = 0;  // balls shrunk for C1/C2 (non-co-smooth contents)
+  std::size_t c3_shrinks = 0;  // balls shrunk for the Lipschitz condition
+  std::size_t rounds = 0;      // passes of the phase loop
+  std::size_t boundary_samples = 0;
+  bool converged = true;
+  double setup_seconds = 0;                  // boundary k-d trees
+  double phase_seconds[3] = {0, 0, 0};       // corner protection, edge protection, surface coverage
+  double c3_seconds = 0;                     // fixing C3 violations
+  double sweep_seconds = 0;                  // final C1/C2 sweep over dense samples
 };
 
-// Not yet available: throws Error(NotImplemented) after checking the options.
+struct FeatureCounts {
+  std::size_t sharp_edges = 0, corners = 0, creases = 0, patches = 0;
+  std::size_t faces_after_smoothing = 0;
+  int smoothing_iterations = 0;
+};
+
+struct MeshResult {
+  std::vector<PhaseTiming> timings;
+  FeatureCounts features;
+  // The surface the balls cover: the input after patch smoothing (paper 2.2), which keeps every
+  // sharp feature exactly and moves only vertices inside smooth patches.
+  SurfaceMesh surface;
+  std::vector<Ball> balls;
+  RefinementStats refinement;
+};
+
+// Runs the pipeline up to options.stop_after. Stages beyond the refinement are not implemented
+// yet: asking for them throws Error(NotImplemented) after the balls are made, and the balls
+// are not lost — call with stop_after = Stage::Balls to get them.
 MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, const ProgressCallback& progress = {});
 
 }  // namespace vorocrust

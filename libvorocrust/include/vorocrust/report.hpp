@@ -23,6 +23,7 @@ struct RunReport {
   const SurfaceMesh* mesh = nullptr;  // null when reading failed
   const MeshInfo* input = nullptr;
   const ValidationReport* validation = nullptr;
+  const MeshResult* result = nullptr;  // null until the pipeline returned
   std::vector<PhaseTiming> timings;
   std::string status;   // "ok", or the failure class ("not yet implemented", "invalid geometry", ...)
   std::string message;  // one line; empty on success

@@ -1,5 +1,11 @@
+#include <chrono>
 #include <cmath>
+#include <numbers>
 
+#include "features/smooth_patches.hpp"
+#include "features/strata.hpp"
+#include "refinement/refine_balls.hpp"
+#include "refinement/sizing_field.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/mesher.hpp"
 
@@ -15,15 +21,75 @@ void MeshOptions::check() const {
   }
   if (!(max_size > 0)) throw Error(Error::Kind::Usage, "--max-size must be positive, got " + std::to_string(max_size));
   if (threads < 0) throw Error(Error::Kind::Usage, "--threads must be 0 (all) or positive");
+  if (smoothing_iterations < 0) throw Error(Error::Kind::Usage, "--smoothing-iterations must be 0 or positive");
 }
+
+namespace {
+
+class PhaseClock {
+ public:
+  explicit PhaseClock(std::vector<PhaseTiming>& timings) : timings_(timings) {}
+  template <class Work>
+  auto operator()(const char* name, Work&& work) {
+    const auto start = std::chrono::steady_clock::now();
+    auto result = work();
+    timings_.push_back({name, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+    return result;
+  }
+
+ private:
+  std::vector<PhaseTiming>& timings_;
+};
+
+}  // namespace
 
 MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, const ProgressCallback& progress) {
   options.check();
-  if (progress && !progress({"refinement", 0.0})) throw Error(Error::Kind::Cancelled, "cancelled");
-  (void)input;
+  MeshResult result;
+  PhaseClock clock(result.timings);
+  const double sharp_angle = options.sharp_angle_degrees * std::numbers::pi / 180;
+  if (progress && !progress({"features", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
+
+  // Features (paper 2.2).
+  Strata strata = clock("features", [&] { return detect_strata(input, sharp_angle); });
+  for (bool sharp : strata.sharp_edge) result.features.sharp_edges += sharp;
+  result.features.corners = strata.corners.size();
+  result.features.creases = strata.creases.size();
+  result.features.patches = strata.num_patches;
+
+  // Patch smoothing (paper 2.2): flatten the patches so nearby normals agree, features untouched.
+  result.surface = input;
+  if (options.smoothing_iterations > 0) {
+    if (progress && !progress({"smoothing", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
+    clock("smoothing", [&] {
+      SmoothingOptions smoothing;
+      smoothing.max_iterations = options.smoothing_iterations;
+      SmoothedSurface smoothed = smooth_patches(input, strata, smoothing);
+      result.features.smoothing_iterations = smoothed.iterations;
+      if (smoothed.iterations > 0) {
+        strata = strata_after_smoothing(smoothed);
+        result.surface = std::move(smoothed.mesh);
+      }
+      return 0;
+    });
+  }
+  result.features.faces_after_smoothing = result.surface.num_faces();
+  const SurfaceMesh& surface = result.surface;
+
+  // Refinement (paper 2.3).
+  const SizingField sizing = options.sizing_file.empty() ? SizingField(options.max_size)
+                                                         : SizingField(options.max_size, options.sizing_file);
+  RefinementOptions refinement;
+  refinement.lipschitz = options.lipschitz;
+  refinement.sharp_angle = sharp_angle;
+  refinement.seed = options.seed;
+  result.balls = clock("refinement", [&] {
+    return refine_balls(surface, strata, sizing, refinement, progress, result.refinement);
+  });
+  if (options.stop_after == Stage::Balls) return result;
   throw Error(Error::Kind::NotImplemented,
-              "not yet: the refinement stage (protecting balls, paper section 2.3) is not implemented in this "
-              "version; `vorocrust info` reads and validates the input");
+              "not yet: surface seeds and cells (paper 2.4-2.5) are not implemented in this version; "
+              "run with --stop-after balls for the protecting balls");
 }
 
 }  // namespace vorocrust

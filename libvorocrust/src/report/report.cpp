@@ -83,12 +83,41 @@ std::string run_report_json(const RunReport& report, int indent) {
                {{"lipschitz", o.lipschitz},
                 {"sharp_angle_degrees", o.sharp_angle_degrees},
                 {"max_size", std::isfinite(o.max_size) ? json(o.max_size) : json(nullptr)},
+                {"smoothing_iterations", o.smoothing_iterations},
+                {"sizing_file", o.sizing_file.string()},
+                {"stop_after", o.stop_after == Stage::Balls ? "balls" : "cells"},
                 {"seed", o.seed},
                 {"threads", o.threads}}},
               {"status", report.status},
               {"message", report.message},
               {"timings", timings},
               {"total_seconds", total}};
+  if (report.result) {
+    const FeatureCounts& f = report.result->features;
+    const RefinementStats& r = report.result->refinement;
+    doc["features"] = {{"sharp_edges", f.sharp_edges}, {"corners", f.corners},  {"creases", f.creases},
+                       {"patches", f.patches},         {"faces_after_smoothing", f.faces_after_smoothing},
+                       {"smoothing_iterations", f.smoothing_iterations}};
+    // The rows of the paper's Table 1, with the counts behind them.
+    doc["refinement"] = {
+        {"balls", {{"corner", r.balls[0]}, {"crease", r.balls[1]}, {"patch", r.balls[2]},
+                   {"total", r.balls[0] + r.balls[1] + r.balls[2]}}},
+        {"seconds",
+         {{"boundary_samples", r.setup_seconds},
+          {"corner_protection", r.phase_seconds[0]},
+          {"edge_protection", r.phase_seconds[1]},
+          {"surface_coverage", r.phase_seconds[2]},
+          {"fixing_c3_violations", r.c3_seconds},
+          {"c1_c2_sweep", r.sweep_seconds}}},
+        {"darts", r.darts},
+        {"rejected_for_density", r.rejected_for_density},
+        {"subdivisions", r.subdivisions},
+        {"c1_shrinks", r.c1_shrinks},
+        {"c3_shrinks", r.c3_shrinks},
+        {"rounds", r.rounds},
+        {"boundary_samples", r.boundary_samples},
+        {"converged", r.converged}};
+  }
   if (report.mesh && report.input && report.validation) {
     doc["input"] = info_object(report.inputs, *report.mesh, *report.input, *report.validation);
   }

@@ -1,0 +1,501 @@
+// Recursive maximal Poisson-disk sampling of balls (paper section 2.3).
+#include "refinement/refine_balls.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <random>
+
+#include "geometry/box_tree.hpp"
+#include "refinement/ball_index.hpp"
+#include "refinement/subface.hpp"
+#include "refinement/union_cover.hpp"
+#include "vorocrust/error.hpp"
+
+namespace vorocrust {
+
+namespace {
+
+constexpr double kAlpha = 0.13397459621556135;  // 1 - sqrt(3)/2 (paper 2.3, Deep Coverage)
+constexpr double kDeep = 1 - kAlpha;
+constexpr double kSeparation = 0.49;              // r_p <= 0.49 |p - q*|
+constexpr int kMissLimit = 100;                   // consecutive misses before subdividing
+constexpr double kDensityRejection = 0.1;         // density regulation
+constexpr int kMaxDepth = 40;                     // subdivision levels: 2^-40 of an element
+
+using Clock = std::chrono::steady_clock;
+
+// How far a ball counts as covering for the phase sampling `phase`. Balls of the phase itself
+// cover deeply (C4). Balls of a lower type keep the phase out of all they contain (paper 2.3),
+// except that a corner ball keeps a crease out only of what it covers deeply: every crease point
+// then lies deep inside some protecting ball, so their union holds a tube of positive width
+// around each crease and patch balls, which must stay clear of creases, never shrink without end.
+double covering_radius(StratumType phase, StratumType ball_type, double radius) {
+  if (ball_type == phase) return kDeep * radius;
+  if (phase == StratumType::Crease && ball_type == StratumType::Corner) return kDeep * radius;
+  return radius;
+}
+double diagonal(const SurfaceMesh& mesh) {
+  Eigen::AlignedBox3d box;
+  for (const Point& p : mesh.vertices) box.extend(p);
+  return box.diagonal().norm();
+}
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+class Refiner {
+ public:
+  Refiner(const SurfaceMesh& mesh, const Strata& strata, const SizingField& sizing, const RefinementOptions& options,
+          const ProgressCallback& progress, RefinementStats& stats)
+      : mesh_(mesh),
+        strata_(strata),
+        sizing_(sizing),
+        options_(options),
+        progress_(progress),
+        stats_(stats),
+        cosmooth_(strata, options.sharp_angle, 1e-12 * diagonal(mesh)),
+        boundary_(mesh, strata, options.samples, options.seed),
+        rng_(options.seed),
+        dirty_edge_(strata.topology.num_edges(), kClean),
+        dirty_face_(mesh.num_faces(), kUnsampled) {
+    for (std::size_t e = 0; e < dirty_edge_.size(); ++e) {
+      if (strata.edge_crease[e] != Strata::kNone) dirty_edge_[e] = kUnsampled;
+    }
+    min_radius_ = 1e-9 * diagonal(mesh);
+    build_element_trees();
+    stats_.boundary_samples = boundary_.size();
+  }
+
+  std::vector<Ball> run();
+
+ private:
+  // --- phases ---------------------------------------------------------------------------------
+  void protect_corners();
+  void sample(StratumType type);  // MPS over the dirty elements of one stratum type
+  void enforce_lipschitz(StratumType type);
+  bool sweep();  // true when it shrank something
+
+  // --- MPS pieces -----------------------------------------------------------------------------
+  bool try_dart(StratumType type, const SurfaceSite& site);
+  bool covered(StratumType type, const SurfaceSite& site);
+  double initial_radius(const SurfaceSite& site);
+  // Balls of every type that reach the subface; a child's are among its parent's.
+  void reaching(const Subface& s, std::vector<std::uint32_t>& out) const;
+  bool discard(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates);
+  void check_violations(const Subface& s, const std::vector<std::uint32_t>& candidates);
+  SurfaceSite site_on(const Subface& s, const Point& p) const;
+
+  // --- shrinking ------------------------------------------------------------------------------
+  void shrink(std::uint32_t ball, double radius, std::size_t& counter);
+  void mark_dirty(const Point& centre, double radius, StratumType type);
+  void build_element_trees();
+  void report(const char* phase, double fraction);
+  bool has_dirty(StratumType type) const {
+    const auto& flags = type == StratumType::Crease ? dirty_edge_ : dirty_face_;
+    return std::any_of(flags.begin(), flags.end(), [](char f) { return f != kClean; });
+  }
+
+  const SurfaceMesh& mesh_;
+  const Strata& strata_;
+  const SizingField& sizing_;
+  const RefinementOptions& options_;
+  const ProgressCallback& progress_;
+  RefinementStats& stats_;
+  CoSmoothness cosmooth_;
+  BoundarySamples boundary_;
+  BallIndex balls_;
+  std::mt19937_64 rng_;
+  std::uniform_real_distribution<double> unit_{0.0, 1.0};
+  // Per element: kClean, kLostCover (a shrunk ball gave up part of it) or kUnsampled.
+  static constexpr char kClean = 0, kLostCover = 1, kUnsampled = 2;
+  std::vector<char> dirty_edge_, dirty_face_;
+  std::vector<geometry::Box> lost_;  // boxes of the balls that shrank, as they were before
+  std::vector<bool> corner_placed_;
+  int lowest_shrunk_ = 3;  // lowest stratum type whose ball shrank since it was last reset
+  double min_radius_ = 0;
+  std::unique_ptr<geometry::BoxTree> edge_tree_, face_tree_;
+  std::vector<std::uint32_t> scratch_;
+};
+
+void Refiner::report(const char* phase, double fraction) {
+  if (progress_ && !progress_({phase, fraction})) throw Error(Error::Kind::Cancelled, "cancelled during refinement");
+}
+
+void Refiner::build_element_trees() {
+  std::vector<geometry::Box> edge_boxes(strata_.topology.num_edges());
+  std::vector<std::uint32_t> edges;
+  for (std::uint32_t e = 0; e < edge_boxes.size(); ++e) {
+    if (strata_.edge_crease[e] == Strata::kNone) continue;
+    for (Index v : strata_.topology.edges[e]) edge_boxes[e].include(mesh_.vertices[v]);
+    edges.push_back(e);
+  }
+  edge_tree_ = std::make_unique<geometry::BoxTree>(std::move(edge_boxes), std::move(edges));
+  std::vector<geometry::Box> face_boxes(mesh_.num_faces());
+  std::vector<std::uint32_t> faces(mesh_.num_faces());
+  for (std::uint32_t f = 0; f < faces.size(); ++f) {
+    for (Index v : mesh_.triangles[f]) face_boxes[f].include(mesh_.vertices[v]);
+    faces[f] = f;
+  }
+  face_tree_ = std::make_unique<geometry::BoxTree>(std::move(face_boxes), std::move(faces));
+}
+
+// Elements of the strata a ball of `type` could cover — its own type and the higher ones — that
+// come within `radius` of `centre` must be sampled again.
+void Refiner::mark_dirty(const Point& centre, double radius, StratumType type) {
+  geometry::Box query;
+  query.include(Point(centre.array() - radius));
+  query.include(Point(centre.array() + radius));
+  if (type <= StratumType::Crease) {
+    edge_tree_->for_each_overlap(query, [&](std::uint32_t e) {
+      const auto [a, b] = strata_.topology.edges[e];
+      if (distance_to_segment(centre, mesh_.vertices[a], mesh_.vertices[b]) < radius) {
+        dirty_edge_[e] = std::max(dirty_edge_[e], kLostCover);
+      }
+    });
+  }
+  face_tree_->for_each_overlap(query, [&](std::uint32_t f) {
+    const Triangle& t = mesh_.triangles[f];
+    if (distance_to_triangle(centre, mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]]) < radius) {
+      dirty_face_[f] = std::max(dirty_face_[f], kLostCover);
+    }
+  });
+  lost_.push_back(query);
+}
+
+void Refiner::shrink(std::uint32_t ball, double radius, std::size_t& counter) {
+  const RefinedBall& b = balls_[ball];
+  if (!(radius < b.radius)) return;
+  const double old_radius = b.radius;
+  balls_.shrink(ball, radius);
+  ++counter;
+  lowest_shrunk_ = std::min(lowest_shrunk_, static_cast<int>(b.site.type));
+  mark_dirty(b.site.position, old_radius, b.site.type);
+}
+
+double Refiner::initial_radius(const SurfaceSite& site) {
+  double r = sizing_(site.position);
+  const std::int64_t q = balls_.nearest(site.type, site.position);
+  if (q >= 0) {
+    const RefinedBall& near = balls_[static_cast<std::uint32_t>(q)];
+    r = std::min(r, near.radius + options_.lipschitz * (near.site.position - site.position).norm());
+  }
+  // q* matters only where 0.49 |p - q*| would undercut the other bounds.
+  return std::min(r, kSeparation * boundary_.distance_to_non_cosmooth(site, cosmooth_, r / kSeparation));
+}
+
+// Paper 2.3: a dart lands where no ball covers it (covering_radius). A
+// ball that holds the dart without being co-smooth with it violates C1: it shrinks (paper 2.3,
+// "Detecting Violations") instead of keeping the dart out, or that region would never fill.
+bool Refiner::covered(StratumType type, const SurfaceSite& site) {
+  bool result = false;
+  for (int t = 0; t <= static_cast<int>(type) && !result; ++t) {
+    scratch_.clear();
+    balls_.reaching(static_cast<StratumType>(t), site.position, 0.0, scratch_);
+    const std::vector<std::uint32_t> holding = scratch_;
+    for (std::uint32_t b : holding) {
+      const RefinedBall& ball = balls_[b];
+      const double d = (ball.site.position - site.position).norm();
+      if (!cosmooth_(ball.site, site)) {
+        shrink(b, kSeparation * d, stats_.c1_shrinks);
+        continue;
+      }
+      if (d <= covering_radius(type, ball.site.type, ball.radius)) result = true;
+    }
+  }
+  return result;
+}
+
+bool Refiner::try_dart(StratumType type, const SurfaceSite& site) {
+  ++stats_.darts;
+  if (covered(type, site)) return false;
+  double r = initial_radius(site);
+  // Density regulation: a ball that would hold another centre deeply is rejected now and then,
+  // otherwise shrunk to meet C4.
+  scratch_.clear();
+  for (int t = 0; t < 3; ++t) balls_.centres_within(static_cast<StratumType>(t), site.position, kDeep * r, scratch_);
+  if (!scratch_.empty()) {
+    if (unit_(rng_) < kDensityRejection) {
+      ++stats_.rejected_for_density;
+      return false;
+    }
+    for (std::uint32_t b : scratch_) r = std::min(r, (balls_[b].site.position - site.position).norm() / kDeep);
+  }
+  if (!(r > min_radius_)) return false;
+  balls_.add(site, r);
+  return true;
+}
+
+SurfaceSite Refiner::site_on(const Subface& s, const Point& p) const {
+  return s.is_segment() ? crease_site(strata_, mesh_, s.element, p) : patch_site(strata_, s.element, p);
+}
+
+void Refiner::reaching(const Subface& s, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  const Point centroid = s.centroid();
+  const double reach = s.circumradius(centroid);
+  for (int t = 0; t < 3; ++t) balls_.reaching(static_cast<StratumType>(t), centroid, reach, out);
+}
+
+// Paper 2.3 "Detecting Violations": every ball reaching the subface must be co-smooth with it,
+// checked at the point of the subface nearest to the centre and at the corners it contains.
+void Refiner::check_violations(const Subface& s, const std::vector<std::uint32_t>& candidates) {
+  for (std::uint32_t b : candidates) {
+    const RefinedBall& ball = balls_[b];
+    const Point q = s.closest_point(ball.site.position);
+    const double d = (q - ball.site.position).norm();
+    if (!(d < ball.radius)) continue;
+    bool violates = !cosmooth_(ball.site, site_on(s, q));
+    for (int k = 0; k < s.corner_count() && !violates; ++k) {
+      if ((s.corner(k) - ball.site.position).norm() < ball.radius) violates = !cosmooth_(ball.site, site_on(s, s.corner(k)));
+    }
+    if (violates) shrink(b, kSeparation * d, stats_.c1_shrinks);
+  }
+}
+
+// A subface leaves the pool once it is covered: by balls of a lower type (whose inside is kept
+// from higher phases) or deeply by balls of its own type, every ball co-smooth with it. One ball
+// is tried first; then the union (all balls along a segment, pairs over a triangle), which spares
+// splitting the fringe where two balls meet down to pieces that fit in one.
+bool Refiner::discard(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates) {
+  const Point centroid = s.centroid();
+  const auto covering = [&] {
+    std::vector<CoverBall> cover;
+    for (std::uint32_t b : candidates) {
+      const RefinedBall& ball = balls_[b];
+      if (ball.site.type > type) continue;
+      const double limit = covering_radius(type, ball.site.type, ball.radius);
+      if (!((s.closest_point(ball.site.position) - ball.site.position).norm() < limit)) continue;
+      if (!cosmooth_(ball.site, site_on(s, centroid))) continue;
+      cover.push_back({ball.site.position, limit});
+    }
+    return cover;
+  };
+  const auto covered_by = [&](const std::vector<CoverBall>& cover) {
+    for (const CoverBall& c : cover) {
+      bool all = true;
+      for (int k = 0; k < s.corner_count() && all; ++k) all = (s.corner(k) - c.centre).norm() <= c.radius;
+      if (all) return true;
+    }
+    if (s.is_segment()) return segment_covered(s.corner(0), s.corner(1), cover);
+    for (std::size_t i = 0; i < cover.size(); ++i) {
+      for (std::size_t j = i + 1; j < cover.size(); ++j) {
+        if (triangle_covered_by_two(s.corner(0), s.corner(1), s.corner(2), cover[i], cover[j])) return true;
+      }
+    }
+    return false;
+  };
+  if (!covered_by(covering())) return false;
+  check_violations(s, candidates);
+  return covered_by(covering());  // the check may have shrunk a ball that covered the subface
+}
+
+void Refiner::protect_corners() {
+  corner_placed_.resize(strata_.corners.size(), false);
+  for (Index c = 0; c < strata_.corners.size(); ++c) {
+    if (corner_placed_[c]) continue;
+    const SurfaceSite site = corner_site(strata_, mesh_, c);
+    const double bound = sizing_(site.position);
+    double r = std::min(bound, kSeparation * boundary_.distance_to_non_cosmooth(site, cosmooth_, bound / kSeparation));
+    if (!std::isfinite(r)) r = std::numeric_limits<double>::max();  // a lone corner with nothing near
+    balls_.add(site, r);
+    corner_placed_[c] = true;
+  }
+}
+
+void Refiner::sample(StratumType type) {
+  // Only the lost regions recorded so far can have lost cover; later losses are the next pass's.
+  std::vector<geometry::Box> lost_boxes = std::move(lost_);
+  lost_.clear();
+  std::vector<std::uint32_t> lost_items(lost_boxes.size());
+  for (std::uint32_t i = 0; i < lost_items.size(); ++i) lost_items[i] = i;
+  const geometry::BoxTree lost_tree(lost_boxes, std::move(lost_items));
+  // A piece of an element that lost cover needs sampling only where it meets a lost region.
+  const auto still_needed = [&](const Subface& piece) {
+    if (!piece.focused) return true;
+    geometry::Box box;
+    for (int k = 0; k < piece.corner_count(); ++k) box.include(piece.corner(k));
+    bool hit = false;
+    lost_tree.for_each_overlap(box, [&](std::uint32_t) { hit = true; });
+    return hit;
+  };
+
+  std::vector<Subface> pool;
+  if (type == StratumType::Crease) {
+    for (Index e = 0; e < dirty_edge_.size(); ++e) {
+      if (dirty_edge_[e] == kClean) continue;
+      const auto [a, b] = strata_.topology.edges[e];
+      pool.push_back(Subface::segment(mesh_.vertices[a], mesh_.vertices[b], e));
+      pool.back().focused = dirty_edge_[e] == kLostCover;
+      dirty_edge_[e] = kClean;
+    }
+  } else {
+    for (Index f = 0; f < dirty_face_.size(); ++f) {
+      if (dirty_face_[f] == kClean) continue;
+      const Triangle& t = mesh_.triangles[f];
+      pool.push_back(Subface::triangle(mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]], f));
+      pool.back().focused = dirty_face_[f] == kLostCover;
+      dirty_face_[f] = kClean;
+    }
+  }
+  const char* phase = type == StratumType::Crease ? "refinement: creases" : "refinement: patches";
+  double initial_measure = 0;
+  for (const Subface& s : pool) initial_measure += s.measure();
+  std::vector<double> prefix;
+  for (int depth = 0; !pool.empty(); ++depth) {
+    prefix.resize(pool.size());
+    double total = 0;
+    for (std::size_t i = 0; i < pool.size(); ++i) prefix[i] = total += pool[i].measure();
+    report(phase, initial_measure > 0 ? 1 - total / initial_measure : -1);
+    if (total > 0) {
+      for (int misses = 0; misses < kMissLimit;) {
+        const double u = unit_(rng_) * total;
+        const std::size_t i = std::min<std::size_t>(std::upper_bound(prefix.begin(), prefix.end(), u) - prefix.begin(), pool.size() - 1);
+        const Point p = pool[i].random_point(rng_, unit_);
+        misses = try_dart(type, site_on(pool[i], p)) ? 0 : misses + 1;
+        if ((stats_.darts & 1023) == 0) report(phase, -1);
+      }
+    }
+    ++stats_.subdivisions;
+    std::vector<Subface> next;
+    next.reserve(pool.size() * 2);
+    std::vector<std::uint32_t> candidates;
+    for (const Subface& s : pool) {
+      reaching(s, candidates);
+      for (const Subface& child : s.split()) {
+        if (depth + 1 >= kMaxDepth || !(child.measure() > 0)) continue;  // below any meaningful size
+        if (still_needed(child) && !discard(type, child, candidates)) next.push_back(child);
+      }
+    }
+    // Legitimate runs keep well under 10 pieces per input face; a pool this large only grows
+    // along a curve no stratum protects, where balls cannot converge (crossing surfaces).
+    if (next.size() > std::max<std::size_t>(250'000, 60 * mesh_.num_faces())) {
+      const Subface& where = next.front();
+      const Index face = where.is_segment() ? strata_.topology.faces_of(where.element)[0] : where.element;
+      throw Error(Error::Kind::InvalidGeometry,
+                  "refinement cannot converge: " + std::to_string(next.size()) + " pieces of the surface stay " +
+                      "uncovered after " + std::to_string(depth + 1) + " subdivisions, first near " +
+                      describe_face(mesh_, face) + "; surfaces that intersect or nearly touch are the usual cause",
+                  {.face = face});
+    }
+    pool = std::move(next);
+  }
+}
+
+// C3 within one stratum type. The lower envelope r'_p = min_q (r_q + L |p - q|) over the type's
+// balls is itself L-Lipschitz (the distance obeys the triangle inequality), so one pass computed
+// from the old radii suffices; it runs in parallel and is independent of the thread count.
+void Refiner::enforce_lipschitz(StratumType type) {
+  const auto start = Clock::now();
+  const double L = options_.lipschitz;
+  std::vector<std::uint32_t> ids;
+  for (std::uint32_t b = 0; b < balls_.size(); ++b) {
+    if (balls_[b].site.type == type) ids.push_back(b);
+  }
+  std::vector<double> target(ids.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ids.size(), 64), [&](const auto& range) {
+    std::vector<std::uint32_t> near;
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const RefinedBall& p = balls_[ids[i]];
+      double r = p.radius;
+      near.clear();
+      balls_.centres_within(type, p.site.position, r / L, near);
+      for (std::uint32_t q : near) r = std::min(r, balls_[q].radius + L * (balls_[q].site.position - p.site.position).norm());
+      target[i] = r;
+    }
+  });
+  for (std::size_t i = 0; i < ids.size(); ++i) shrink(ids[i], target[i], stats_.c3_shrinks);
+  stats_.c3_seconds += seconds_since(start);
+}
+
+// C1 and C2 over dense samples: a ball holding a sample it is not co-smooth with shrinks to
+// 0.49 of the distance; two overlapping balls neither of which is co-smooth with the other's
+// centre both shrink apart.
+bool Refiner::sweep() {
+  const auto start = Clock::now();
+  const std::size_t n = balls_.size();
+  std::vector<double> target(n);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const auto& range) {
+    std::vector<std::uint32_t> near;
+    for (std::size_t b = range.begin(); b != range.end(); ++b) {
+      const RefinedBall& ball = balls_[static_cast<std::uint32_t>(b)];
+      double r = ball.radius;
+      boundary_.for_each_within(ball.site.position, ball.radius, [&](const SurfaceSite& x) {
+        if (!cosmooth_(ball.site, x)) r = std::min(r, kSeparation * (x.position - ball.site.position).norm());
+      });
+      for (int t = 0; t < 3; ++t) {
+        near.clear();
+        balls_.reaching(static_cast<StratumType>(t), ball.site.position, ball.radius, near);
+        for (std::uint32_t q : near) {
+          const RefinedBall& other = balls_[q];
+          if (q == b || cosmooth_(ball.site, other.site) || cosmooth_(other.site, ball.site)) continue;
+          r = std::min(r, kSeparation * (other.site.position - ball.site.position).norm());
+        }
+      }
+      target[b] = r;
+    }
+  });
+  const std::size_t before = stats_.c1_shrinks;
+  for (std::uint32_t b = 0; b < n; ++b) shrink(b, target[b], stats_.c1_shrinks);
+  stats_.sweep_seconds += seconds_since(start);
+  return stats_.c1_shrinks != before;
+}
+
+std::vector<Ball> Refiner::run() {
+  int phase = 0;
+  for (stats_.rounds = 0;; ++stats_.rounds) {
+    if (static_cast<int>(stats_.rounds) >= options_.max_rounds) {
+      stats_.converged = false;
+      break;
+    }
+    const auto start = Clock::now();
+    const auto type = static_cast<StratumType>(phase);
+    lowest_shrunk_ = 3;
+    if (type == StratumType::Corner) {
+      report("refinement: corners", -1);
+      protect_corners();
+      enforce_lipschitz(type);
+    } else {
+      sample(type);
+    }
+    stats_.phase_seconds[phase] += seconds_since(start);
+    if (lowest_shrunk_ < phase) {  // an earlier phase's ball shrank: recurse to that phase
+      phase = lowest_shrunk_;
+      continue;
+    }
+    if (type != StratumType::Corner) {
+      enforce_lipschitz(type);
+      if (has_dirty(type)) continue;  // shrinking uncovered part of this phase: sample it again
+    }
+    if (phase < 2) {
+      ++phase;
+      continue;
+    }
+    lowest_shrunk_ = 3;
+    if (!sweep()) break;
+    phase = lowest_shrunk_;
+  }
+  std::vector<Ball> out;
+  out.reserve(balls_.size());
+  for (const RefinedBall& b : balls_.balls()) {
+    out.push_back({b.site.position, b.radius, b.site.type, b.site.stratum});
+    ++stats_.balls[static_cast<int>(b.site.type)];
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Ball> refine_balls(const SurfaceMesh& mesh, const Strata& strata, const SizingField& sizing,
+                               const RefinementOptions& options, const ProgressCallback& progress,
+                               RefinementStats& stats) {
+  const auto start = Clock::now();
+  Refiner refiner(mesh, strata, sizing, options, progress, stats);
+  stats.setup_seconds = seconds_since(start);
+  return refiner.run();
+}
+
+}  // namespace vorocrust

@@ -1,0 +1,72 @@
+// Internal: the pieces of input elements that maximal Poisson-disk sampling works on (paper 2.3,
+// "Sampling Basics"): a segment of a crease edge, or a triangle inside a patch face. Splitting
+// halves a segment and cuts a triangle into four through its edge midpoints.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+
+#include "vorocrust/surface_mesh.hpp"
+
+namespace vorocrust {
+
+double distance_to_segment(const Point& p, const Point& a, const Point& b);
+double distance_to_triangle(const Point& p, const Point& a, const Point& b, const Point& c);
+Point closest_on_segment(const Point& p, const Point& a, const Point& b);
+Point closest_on_triangle(const Point& p, const Point& a, const Point& b, const Point& c);
+
+class Subface {
+ public:
+  static Subface segment(const Point& a, const Point& b, Index edge) { return Subface({a, b, b}, 2, edge); }
+  static Subface triangle(const Point& a, const Point& b, const Point& c, Index face) { return Subface({a, b, c}, 3, face); }
+
+  bool is_segment() const { return corners_ == 2; }
+  int corner_count() const { return corners_; }
+  const Point& corner(int k) const { return p_[k]; }
+  Index element;         // the crease edge or patch face the piece lies on
+  bool focused = false;  // sampled only where it meets a region some ball gave up
+
+  double measure() const {
+    return is_segment() ? (p_[1] - p_[0]).norm() : 0.5 * (p_[1] - p_[0]).cross(p_[2] - p_[0]).norm();
+  }
+  Point centroid() const { return is_segment() ? Point(0.5 * (p_[0] + p_[1])) : Point((p_[0] + p_[1] + p_[2]) / 3); }
+  double circumradius(const Point& centre) const {
+    double r = 0;
+    for (int k = 0; k < corners_; ++k) r = std::max(r, (p_[k] - centre).norm());
+    return r;
+  }
+  Point closest_point(const Point& q) const {
+    return is_segment() ? closest_on_segment(q, p_[0], p_[1]) : closest_on_triangle(q, p_[0], p_[1], p_[2]);
+  }
+  Point random_point(std::mt19937_64& rng, std::uniform_real_distribution<double>& unit) const {
+    double u = unit(rng);
+    if (is_segment()) return p_[0] + u * (p_[1] - p_[0]);
+    double v = unit(rng);
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    return p_[0] + u * (p_[1] - p_[0]) + v * (p_[2] - p_[0]);
+  }
+  // Two halves of a segment, four quarters of a triangle (the unused slots are segments of zero
+  // measure, which callers skip).
+  std::array<Subface, 4> split() const {
+    std::array<Subface, 4> children = [&]() -> std::array<Subface, 4> {
+      if (is_segment()) {
+        const Point m = 0.5 * (p_[0] + p_[1]);
+        return {segment(p_[0], m, element), segment(m, p_[1], element), segment(m, m, element), segment(m, m, element)};
+      }
+      const Point ab = 0.5 * (p_[0] + p_[1]), bc = 0.5 * (p_[1] + p_[2]), ca = 0.5 * (p_[2] + p_[0]);
+      return {triangle(p_[0], ab, ca, element), triangle(ab, p_[1], bc, element), triangle(ca, bc, p_[2], element),
+              triangle(ab, bc, ca, element)};
+    }();
+    for (Subface& c : children) c.focused = focused;
+    return children;
+  }
+
+ private:
+  Subface(std::array<Point, 3> p, int corners, Index e) : element(e), p_(p), corners_(corners) {}
+  std::array<Point, 3> p_;
+  int corners_;
+};
+
+}  // namespace vorocrust
