@@ -40,7 +40,9 @@ TEST(UnionCover, SegmentAgreesWithBruteForce) {
     const bool exact = segment_covered(a, b, balls);
     covered += exact;
     // Brute force can only miss gaps narrower than its spacing: it may say covered when exact says not.
-    if (exact) EXPECT_TRUE(brute_segment(a, b, balls)) << trial;
+    if (exact) {
+      EXPECT_TRUE(brute_segment(a, b, balls)) << trial;
+    }
   }
   EXPECT_GT(covered, 50);
 }

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <optional>
 #include <random>
+#include <string>
+#include <string_view>
 
 #include "geometry/box_tree.hpp"
 #include "refinement/ball_index.hpp"
@@ -93,7 +95,7 @@ class Refiner {
   void shrink(std::uint32_t ball, double radius, std::size_t& counter);
   void mark_dirty(const Point& centre, double radius, StratumType type);
   void build_element_trees();
-  void report(const char* phase, double fraction);
+  void report(std::string_view phase, double fraction);
   bool has_dirty(StratumType type) const {
     const auto& flags = type == StratumType::Crease ? dirty_edge_ : dirty_face_;
     return std::any_of(flags.begin(), flags.end(), [](char f) { return f != kClean; });
@@ -115,13 +117,14 @@ class Refiner {
   std::vector<char> dirty_edge_, dirty_face_;
   std::vector<geometry::Box> lost_;  // boxes of the balls that shrank, as they were before
   std::vector<bool> corner_placed_;
-  int lowest_shrunk_ = 3;  // lowest stratum type whose ball shrank since it was last reset
+  int lowest_shrunk_ = 3;
+  int passes_[3] = {0, 0, 0};  // lowest stratum type whose ball shrank since it was last reset
   double min_radius_ = 0;
   std::unique_ptr<geometry::BoxTree> edge_tree_, face_tree_;
   std::vector<std::uint32_t> scratch_;
 };
 
-void Refiner::report(const char* phase, double fraction) {
+void Refiner::report(std::string_view phase, double fraction) {
   if (progress_ && !progress_({phase, fraction})) throw Error(Error::Kind::Cancelled, "cancelled during refinement");
 }
 
@@ -341,15 +344,23 @@ void Refiner::sample(StratumType type) {
       dirty_face_[f] = kClean;
     }
   }
-  const char* phase = type == StratumType::Crease ? "refinement: creases" : "refinement: patches";
-  double initial_measure = 0;
-  for (const Subface& s : pool) initial_measure += s.measure();
+  // Each return of the phase loop to this type is a pass of its own, with its own progress.
+  const int pass = ++passes_[static_cast<int>(type)];
+  const std::string phase = std::string(type == StratumType::Crease ? "refinement: creases" : "refinement: patches") +
+                            (pass > 1 ? ", pass " + std::to_string(pass) : "");
+  // Progress: the share of the elements sampled in this pass that have no piece left in the
+  // pool. (The remaining area vanishes long before the work does, so it would be a poor guide.)
+  std::vector<char> pending(type == StratumType::Crease ? strata_.topology.num_edges() : mesh_.num_faces(), 0);
+  std::size_t initial_elements = pool.size();
   std::vector<double> prefix;
   for (int depth = 0; !pool.empty(); ++depth) {
     prefix.resize(pool.size());
     double total = 0;
     for (std::size_t i = 0; i < pool.size(); ++i) prefix[i] = total += pool[i].measure();
-    report(phase, initial_measure > 0 ? 1 - total / initial_measure : -1);
+    std::size_t elements = 0;
+    for (const Subface& piece : pool) elements += !pending[piece.element] && (pending[piece.element] = 1);
+    for (const Subface& piece : pool) pending[piece.element] = 0;
+    report(phase, initial_elements > 0 ? 1.0 - static_cast<double>(elements) / initial_elements : -1);
     if (total > 0) {
       for (int misses = 0; misses < kMissLimit;) {
         const double u = unit_(rng_) * total;
