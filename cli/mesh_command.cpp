@@ -69,7 +69,13 @@ int run_mesh(const MeshArgs& args) {
     write_balls_csv(result->balls, out / "balls.csv");
     write_balls_vtk(result->balls, out / "balls.vtk");
     // The surface the balls cover, when smoothing changed it: `check-balls` verifies against it.
-    if (result->features.smoothing_iterations > 0) write_mesh(result->surface, out / "smoothed_surface.ply");
+    // A file from an earlier run in the same folder must not pass for this run's.
+    if (result->features.smoothing_iterations > 0) {
+      write_mesh(result->surface, out / "smoothed_surface.ply");
+    } else {
+      std::error_code ignored;
+      std::filesystem::remove(out / "smoothed_surface.ply", ignored);
+    }
     progress.finish();
     if (!args.quiet) {
       const RefinementStats& r = result->refinement;

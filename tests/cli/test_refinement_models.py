@@ -8,6 +8,7 @@ carries a corner ball centred exactly on it.
 
 Run by CTest as: python3 test_refinement_models.py VOROCRUST_BINARY MODELS_DIR
 """
+import json
 import os
 import subprocess
 import sys
@@ -33,6 +34,41 @@ class RefinementMeetsTheBallConditions(unittest.TestCase):
                                        capture_output=True, text=True, timeout=600)
                 self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
                 self.assertIn("all ball conditions hold", check.stdout)
+
+
+    def test_smoothing_keeps_the_conditions_on_the_smoothed_surface(self):
+        # Smoothed, the balls cover the smoothed surface, and check-balls verifies against it.
+        with tempfile.TemporaryDirectory() as out:
+            path = os.path.join(MODELS, "cgal_joint.off")
+            r = subprocess.run([BINARY, "mesh", path, "-o", out, "--stop-after", "balls", "-q",
+                                "--smoothing-iterations", "6"], capture_output=True, text=True, timeout=1200)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                features = json.load(f)["features"]
+            self.assertEqual(features["smoothing_iterations"], 6)
+            self.assertGreater(features["faces_after_smoothing"], 446)
+            smoothed = os.path.join(out, "smoothed_surface.ply")
+            check = subprocess.run([BINARY, "check-balls", smoothed, os.path.join(out, "balls.csv")],
+                                   capture_output=True, text=True, timeout=600)
+            self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
+
+    def test_smoothing_that_would_make_a_feature_is_refused(self):
+        # On fandisk every round of smoothing makes a cone point next to a corner: none is kept,
+        # no smoothed surface is written (not even a stale one), and the balls check against the input.
+        with tempfile.TemporaryDirectory() as out:
+            path = os.path.join(MODELS, "cgal_fandisk.off")
+            open(os.path.join(out, "smoothed_surface.ply"), "w").close()  # a stale file from an earlier run
+            r = subprocess.run([BINARY, "mesh", path, "-o", out, "--stop-after", "balls", "-q",
+                                "--smoothing-iterations", "6"], capture_output=True, text=True, timeout=1200)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                features = json.load(f)["features"]
+            self.assertEqual(features["smoothing_iterations"], 0)
+            self.assertEqual(features["smoothing_rounds_refused"], 1)
+            self.assertFalse(os.path.exists(os.path.join(out, "smoothed_surface.ply")))
+            check = subprocess.run([BINARY, "check-balls", path, os.path.join(out, "balls.csv")],
+                                   capture_output=True, text=True, timeout=600)
+            self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
 
 
 if __name__ == "__main__":

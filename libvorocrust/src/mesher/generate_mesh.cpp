@@ -62,13 +62,24 @@ MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, c
   if (options.smoothing_iterations > 0) {
     if (progress && !progress({"smoothing", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
     clock("smoothing", [&] {
-      SmoothingOptions smoothing;
-      smoothing.max_iterations = options.smoothing_iterations;
-      SmoothedSurface smoothed = smooth_patches(input, strata, smoothing);
-      result.features.smoothing_iterations = smoothed.iterations;
-      if (smoothed.iterations > 0) {
-        strata = strata_after_smoothing(smoothed);
+      // Smoothing must flatten patches, not make features: when the smoothed surface, detected
+      // afresh, has sharp edges or corners the carried-through features lack (a cone point
+      // appears beside a corner on cgal_fandisk), the run takes one round fewer, down to none.
+      for (int rounds = options.smoothing_iterations; rounds > 0; --rounds) {
+        SmoothingOptions smoothing;
+        smoothing.max_iterations = rounds;
+        SmoothedSurface smoothed = smooth_patches(input, strata, smoothing);
+        if (smoothed.iterations == 0) break;
+        Strata carried = strata_after_smoothing(smoothed);
+        const Strata fresh = detect_strata(smoothed.mesh, sharp_angle);
+        if (fresh.sharp_edge != carried.sharp_edge || fresh.corners != carried.corners) {
+          result.features.smoothing_rounds_refused = rounds;
+          continue;
+        }
+        result.features.smoothing_iterations = smoothed.iterations;
+        strata = std::move(carried);
         result.surface = std::move(smoothed.mesh);
+        break;
       }
       return 0;
     });
