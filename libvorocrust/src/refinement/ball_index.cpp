@@ -14,6 +14,31 @@ namespace {
 using Adaptor = PointCloudAdaptor<Point, IdentityPosition>;
 using Tree = DynamicKdTree<Adaptor>;
 
+// Appends the balls whose centres lie within the search radius and which reach the query point
+// (|p - centre| < radius + margin), straight from the tree's leaves.
+class ReachingBalls {
+ public:
+  using DistanceType = double;
+  using IndexType = std::uint32_t;
+  ReachingBalls(double search_radius, double margin, const std::vector<std::uint32_t>& ball_of,
+                const std::vector<RefinedBall>& balls, std::vector<std::uint32_t>& out)
+      : r2_(search_radius * search_radius), margin_(margin), ball_of_(ball_of), balls_(balls), out_(out) {}
+  bool full() const { return true; }
+  double worstDist() const { return r2_; }
+  bool addPoint(double squared_distance, std::uint32_t local) {
+    const std::uint32_t b = ball_of_[local];
+    const double reach = balls_[b].radius + margin_;
+    if (squared_distance < reach * reach) out_.push_back(b);
+    return true;
+  }
+
+ private:
+  double r2_, margin_;
+  const std::vector<std::uint32_t>& ball_of_;
+  const std::vector<RefinedBall>& balls_;
+  std::vector<std::uint32_t>& out_;
+};
+
 // Centres in a k-d tree that grows; `ball[i]` is the ball of the tree's i-th point.
 struct CentreTree {
   std::vector<Point> centres;
@@ -99,14 +124,13 @@ void BallIndex::centres_within(StratumType type, const Point& p, double distance
 }
 
 void BallIndex::reaching(StratumType type, const Point& p, double margin, std::vector<std::uint32_t>& out) const {
-  std::vector<std::uint32_t> candidates;
+  // Removed points (balls refiled in another class) are skipped by nanoflann's search, so each
+  // ball is met at most once.
+  const double query[3] = {p.x(), p.y(), p.z()};
   for (const auto& [k, tree] : trees_->classes[static_cast<int>(type)]) {
-    tree.within(p, std::ldexp(1.0, k) + margin, candidates);
-  }
-  std::sort(candidates.begin(), candidates.end());
-  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  for (std::uint32_t b : candidates) {
-    if ((balls_[b].site.position - p).norm() < balls_[b].radius + margin) out.push_back(b);
+    if (tree.centres.empty()) continue;
+    ReachingBalls result(std::ldexp(1.0, k) + margin, margin, tree.ball, balls_, out);
+    tree.tree->findNeighbors(result, query, nanoflann::SearchParams());
   }
 }
 
