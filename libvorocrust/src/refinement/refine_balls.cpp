@@ -198,8 +198,7 @@ bool Refiner::covered(StratumType type, const SurfaceSite& site) {
   for (int t = 0; t <= static_cast<int>(type) && !result; ++t) {
     scratch_.clear();
     balls_.reaching(static_cast<StratumType>(t), site.position, 0.0, scratch_);
-    const std::vector<std::uint32_t> holding = scratch_;
-    for (std::uint32_t b : holding) {
+    for (std::uint32_t b : scratch_) {  // shrink() leaves scratch_ alone
       const RefinedBall& ball = balls_[b];
       const double d = (ball.site.position - site.position).norm();
       if (!cosmooth_(ball.site, site)) {
