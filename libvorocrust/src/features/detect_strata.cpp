@@ -35,7 +35,7 @@ Index other_end(const EdgeTopology& topo, Index e, Index v) {
 
 // Faces around `v` joined by its non-sharp edges form sectors; a sector whose normals spread by
 // at least theta# has a cone point at v.
-bool sector_spreads(const SurfaceMesh& mesh, const Strata& s, const VertexEdges& ve, Index v, double cos_sharp) {
+bool sector_spreads(const Strata& s, const VertexEdges& ve, Index v, double cos_sharp) {
   std::vector<Index> faces;
   for (Index e : ve.of(v)) {
     for (Index f : s.topology.faces_of(e)) faces.push_back(f);
@@ -55,7 +55,6 @@ bool sector_spreads(const SurfaceMesh& mesh, const Strata& s, const VertexEdges&
     const auto around = s.topology.faces_of(e);
     parent[find(slot(around[0]))] = find(slot(around[1]));
   }
-  (void)mesh;
   for (std::size_t i = 0; i < faces.size(); ++i) {
     for (std::size_t j = i + 1; j < faces.size(); ++j) {
       if (find(i) != find(j)) continue;
@@ -227,7 +226,7 @@ Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle) {
       // The crease goes straight on when a and b are opposite; it turns by the angle between b and -a.
       is_corner = (-a).dot(b) < cos_sharp;
     }
-    if (!is_corner) is_corner = sector_spreads(mesh, s, ve, v, cos_sharp);
+    if (!is_corner) is_corner = sector_spreads(s, ve, v, cos_sharp);
     corner[v] = is_corner;
   }
   complete_strata(mesh, s, corner);

@@ -108,8 +108,6 @@ void BallIndex::shrink(std::uint32_t i, double radius) {
   file_in_class(i);
 }
 
-std::size_t BallIndex::count(StratumType type) const { return trees_->all[static_cast<int>(type)].centres.size(); }
-
 std::int64_t BallIndex::nearest(StratumType type, const Point& p) const {
   const CentreTree& t = trees_->all[static_cast<int>(type)];
   if (t.centres.empty()) return -1;

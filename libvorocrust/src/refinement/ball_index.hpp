@@ -25,7 +25,6 @@ class BallIndex {
   const std::vector<RefinedBall>& balls() const { return balls_; }
   // Radii only shrink: shrinking is how every violation is resolved.
   void shrink(std::uint32_t i, double radius);
-  std::size_t count(StratumType type) const;
 
   // The ball of `type` whose centre is nearest to `p`, or -1 when there is none.
   std::int64_t nearest(StratumType type, const Point& p) const;

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "refinement/point_cloud.hpp"
+#include "refinement/subface.hpp"
 
 namespace vorocrust {
 
@@ -53,6 +54,10 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
 
   // Creases: every edge's midpoint and quarter points, then random points by length.
   auto& crease = sites_[static_cast<int>(StratumType::Crease)];
+  const auto crease_point = [&](Index e, double t) {
+    const auto [a, b] = strata.topology.edges[e];
+    crease.push_back(crease_site(strata, e, (1 - t) * mesh.vertices[a] + t * mesh.vertices[b]));
+  };
   std::vector<Index> crease_edges;
   std::vector<double> lengths;
   for (Index e = 0; e < strata.topology.num_edges(); ++e) {
@@ -60,15 +65,13 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
     crease_edges.push_back(e);
     const auto [a, b] = strata.topology.edges[e];
     lengths.push_back((mesh.vertices[b] - mesh.vertices[a]).norm());
-    for (double t : {0.125, 0.5, 0.875}) {
-      crease.push_back(crease_site(strata, mesh, e, (1 - t) * mesh.vertices[a] + t * mesh.vertices[b]));
-    }
+    for (double t : {0.125, 0.5, 0.875}) crease_point(e, t);
   }
   // Non-corner vertices on creases belong to the crease.
   for (const Crease& c : strata.creases) {
     for (std::size_t i = 0; i < c.vertices.size(); ++i) {
       if (strata.vertex_corner[c.vertices[i]] != Strata::kNone) continue;
-      crease.push_back(crease_site(strata, mesh, c.edges[i < c.edges.size() ? i : i - 1], mesh.vertices[c.vertices[i]]));
+      crease.push_back(crease_site(strata, c.edges[i < c.edges.size() ? i : i - 1], mesh.vertices[c.vertices[i]]));
     }
   }
   if (!crease_edges.empty()) {
@@ -76,9 +79,7 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
     const std::size_t n = std::clamp(counts.crease_per_edge * crease_edges.size(), counts.crease_min, counts.crease_max);
     for (std::size_t k = 0; k < n; ++k) {
       const Index e = crease_edges[pick(unit(rng))];
-      const auto [a, b] = strata.topology.edges[e];
-      const double t = unit(rng);
-      crease.push_back(crease_site(strata, mesh, e, (1 - t) * mesh.vertices[a] + t * mesh.vertices[b]));
+      crease_point(e, unit(rng));
     }
   }
 
@@ -100,12 +101,9 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
     const std::size_t n = std::clamp(counts.patch_per_face * mesh.num_faces(), counts.patch_min, counts.patch_max);
     for (std::size_t k = 0; k < n; ++k) {
       const Index f = static_cast<Index>(pick(unit(rng)));
-      double u = unit(rng), v = unit(rng);
-      if (u + v > 1) u = 1 - u, v = 1 - v;
-      const Point& a = mesh.vertices[mesh.triangles[f][0]];
-      const Point& b = mesh.vertices[mesh.triangles[f][1]];
-      const Point& c = mesh.vertices[mesh.triangles[f][2]];
-      patch.push_back(patch_site(strata, f, a + u * (b - a) + v * (c - a)));
+      const Triangle& t = mesh.triangles[f];
+      const Subface face = Subface::triangle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], f);
+      patch.push_back(patch_site(strata, f, face.random_point(rng, unit)));
     }
   }
 

@@ -232,7 +232,7 @@ bool Refiner::try_dart(StratumType type, const SurfaceSite& site) {
 }
 
 SurfaceSite Refiner::site_on(const Subface& s, const Point& p) const {
-  return s.is_segment() ? crease_site(strata_, mesh_, s.element, p) : patch_site(strata_, s.element, p);
+  return s.is_segment() ? crease_site(strata_, s.element, p) : patch_site(strata_, s.element, p);
 }
 
 void Refiner::reaching(const Subface& s, std::vector<std::uint32_t>& out) const {

@@ -9,8 +9,7 @@ SurfaceSite corner_site(const Strata& strata, const SurfaceMesh& mesh, Index cor
   return {mesh.vertices[strata.corners[corner]], Point::Zero(), StratumType::Corner, corner, strata.corners[corner]};
 }
 
-SurfaceSite crease_site(const Strata& strata, const SurfaceMesh& mesh, Index edge, const Point& position) {
-  (void)mesh;
+SurfaceSite crease_site(const Strata& strata, Index edge, const Point& position) {
   return {position, strata.edge_tangent[edge], StratumType::Crease, static_cast<Index>(strata.edge_crease[edge]), edge};
 }
 

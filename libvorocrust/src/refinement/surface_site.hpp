@@ -17,7 +17,7 @@ struct SurfaceSite {
 
 // The site of a point on a crease edge or patch face (the point is assumed to lie on it).
 SurfaceSite corner_site(const Strata& strata, const SurfaceMesh& mesh, Index corner);
-SurfaceSite crease_site(const Strata& strata, const SurfaceMesh& mesh, Index edge, const Point& position);
+SurfaceSite crease_site(const Strata& strata, Index edge, const Point& position);
 SurfaceSite patch_site(const Strata& strata, Index face, const Point& position);
 
 // The relaxed co-smoothness test of paper 2.3, as docs/ball-conditions.md states it: may a ball
