@@ -55,7 +55,8 @@ struct RefinementStats {
   std::size_t subdivisions = 0;
   std::size_t c1_shrinks = 0;  // balls shrunk for C1/C2 (non-co-smooth contents)
   std::size_t c3_shrinks = 0;  // balls shrunk for the Lipschitz condition
-  std::size_t rounds = 0;      // passes of the phase loop
+  std::size_t sliver_shrinks = 0;  // balls shrunk to eliminate slivers (paper 2.4)
+  std::size_t rounds = 0;      // passes of the phase loop, over all runs
   std::size_t boundary_samples = 0;
   bool converged = true;
   double setup_seconds = 0;                  // boundary k-d trees

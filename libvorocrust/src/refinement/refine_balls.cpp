@@ -36,9 +36,9 @@ using Clock = std::chrono::steady_clock;
 // except that a corner ball keeps a crease out only of what it covers deeply: every crease point
 // then lies deep inside some protecting ball, so their union holds a tube of positive width
 // around each crease and patch balls, which must stay clear of creases, never shrink without end.
-double covering_radius(StratumType phase, StratumType ball_type, double radius) {
-  if (ball_type == phase) return kDeep * radius;
-  if (phase == StratumType::Crease && ball_type == StratumType::Corner) return kDeep * radius;
+double covering_radius(StratumType phase, StratumType ball_type, double radius, double deep) {
+  if (ball_type == phase) return deep * radius;
+  if (phase == StratumType::Crease && ball_type == StratumType::Corner) return deep * radius;
   return radius;
 }
 double diagonal(const SurfaceMesh& mesh) {
@@ -49,9 +49,11 @@ double diagonal(const SurfaceMesh& mesh) {
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-class Refiner {
+}  // namespace
+
+class BallRefinement::Impl {
  public:
-  Refiner(const SurfaceMesh& mesh, const Strata& strata, const SizingField& sizing, const RefinementOptions& options,
+  Impl(const SurfaceMesh& mesh, const Strata& strata, const SizingField& sizing, const RefinementOptions& options,
           const ProgressCallback& progress, RefinementStats& stats)
       : mesh_(mesh),
         strata_(strata),
@@ -72,7 +74,10 @@ class Refiner {
     stats_.boundary_samples = boundary_.size();
   }
 
-  std::vector<Ball> run();
+  void run();
+  const BallIndex& balls() const { return balls_; }
+  void shrink_for_slivers(std::uint32_t ball, double radius) { shrink(ball, radius, stats_.sliver_shrinks); }
+  void relax_deep_coverage() { deep_ = 1 - kAlpha / 2; }
 
  private:
   // --- phases ---------------------------------------------------------------------------------
@@ -118,17 +123,19 @@ class Refiner {
   std::vector<geometry::Box> lost_;  // boxes of the balls that shrank, as they were before
   std::vector<bool> corner_placed_;
   int lowest_shrunk_ = 3;
+  int restart_phase_ = 0;  // where the next run() starts: the lowest type shrunk since the last
+  double deep_ = kDeep;    // C4: coverage must be this deep (1 - alpha)
   int passes_[3] = {0, 0, 0};  // lowest stratum type whose ball shrank since it was last reset
   double min_radius_ = 0;
   std::unique_ptr<geometry::BoxTree> edge_tree_, face_tree_;
   std::vector<std::uint32_t> scratch_;
 };
 
-void Refiner::report(std::string_view phase, double fraction) {
+void BallRefinement::Impl::report(std::string_view phase, double fraction) {
   if (progress_ && !progress_({phase, fraction})) throw Error(Error::Kind::Cancelled, "cancelled during refinement");
 }
 
-void Refiner::build_element_trees() {
+void BallRefinement::Impl::build_element_trees() {
   std::vector<geometry::Box> edge_boxes(strata_.topology.num_edges());
   std::vector<std::uint32_t> edges;
   for (std::uint32_t e = 0; e < edge_boxes.size(); ++e) {
@@ -148,7 +155,7 @@ void Refiner::build_element_trees() {
 
 // Elements of the strata a ball of `type` could cover — its own type and the higher ones — that
 // come within `radius` of `centre` must be sampled again.
-void Refiner::mark_dirty(const Point& centre, double radius, StratumType type) {
+void BallRefinement::Impl::mark_dirty(const Point& centre, double radius, StratumType type) {
   geometry::Box query;
   query.include(Point(centre.array() - radius));
   query.include(Point(centre.array() + radius));
@@ -169,17 +176,18 @@ void Refiner::mark_dirty(const Point& centre, double radius, StratumType type) {
   lost_.push_back(query);
 }
 
-void Refiner::shrink(std::uint32_t ball, double radius, std::size_t& counter) {
+void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, std::size_t& counter) {
   const RefinedBall& b = balls_[ball];
   if (!(radius < b.radius)) return;
   const double old_radius = b.radius;
   balls_.shrink(ball, radius);
   ++counter;
   lowest_shrunk_ = std::min(lowest_shrunk_, static_cast<int>(b.site.type));
+  restart_phase_ = std::min(restart_phase_, static_cast<int>(b.site.type));
   mark_dirty(b.site.position, old_radius, b.site.type);
 }
 
-double Refiner::initial_radius(const SurfaceSite& site) {
+double BallRefinement::Impl::initial_radius(const SurfaceSite& site) {
   double r = sizing_(site.position);
   const std::int64_t q = balls_.nearest(site.type, site.position);
   if (q >= 0) {
@@ -193,7 +201,7 @@ double Refiner::initial_radius(const SurfaceSite& site) {
 // Paper 2.3: a dart lands where no ball covers it (covering_radius). A
 // ball that holds the dart without being co-smooth with it violates C1: it shrinks (paper 2.3,
 // "Detecting Violations") instead of keeping the dart out, or that region would never fill.
-bool Refiner::covered(StratumType type, const SurfaceSite& site) {
+bool BallRefinement::Impl::covered(StratumType type, const SurfaceSite& site) {
   bool result = false;
   for (int t = 0; t <= static_cast<int>(type) && !result; ++t) {
     scratch_.clear();
@@ -205,13 +213,13 @@ bool Refiner::covered(StratumType type, const SurfaceSite& site) {
         shrink(b, kSeparation * d, stats_.c1_shrinks);
         continue;
       }
-      if (d <= covering_radius(type, ball.site.type, ball.radius)) result = true;
+      if (d <= covering_radius(type, ball.site.type, ball.radius, deep_)) result = true;
     }
   }
   return result;
 }
 
-bool Refiner::try_dart(StratumType type, const SurfaceSite& site) {
+bool BallRefinement::Impl::try_dart(StratumType type, const SurfaceSite& site) {
   ++stats_.darts;
   if (covered(type, site)) return false;
   double r = initial_radius(site);
@@ -231,11 +239,11 @@ bool Refiner::try_dart(StratumType type, const SurfaceSite& site) {
   return true;
 }
 
-SurfaceSite Refiner::site_on(const Subface& s, const Point& p) const {
+SurfaceSite BallRefinement::Impl::site_on(const Subface& s, const Point& p) const {
   return s.is_segment() ? crease_site(strata_, s.element, p) : patch_site(strata_, s.element, p);
 }
 
-void Refiner::reaching(const Subface& s, std::vector<std::uint32_t>& out) const {
+void BallRefinement::Impl::reaching(const Subface& s, std::vector<std::uint32_t>& out) const {
   out.clear();
   const Point centroid = s.centroid();
   const double reach = s.circumradius(centroid);
@@ -244,7 +252,7 @@ void Refiner::reaching(const Subface& s, std::vector<std::uint32_t>& out) const 
 
 // Paper 2.3 "Detecting Violations": every ball reaching the subface must be co-smooth with it,
 // checked at the point of the subface nearest to the centre and at the corners it contains.
-void Refiner::check_violations(const Subface& s, const std::vector<std::uint32_t>& candidates) {
+void BallRefinement::Impl::check_violations(const Subface& s, const std::vector<std::uint32_t>& candidates) {
   for (std::uint32_t b : candidates) {
     const RefinedBall& ball = balls_[b];
     const Point q = s.closest_point(ball.site.position);
@@ -262,14 +270,14 @@ void Refiner::check_violations(const Subface& s, const std::vector<std::uint32_t
 // from higher phases) or deeply by balls of its own type, every ball co-smooth with it. One ball
 // is tried first; then the union (all balls along a segment, pairs over a triangle), which spares
 // splitting the fringe where two balls meet down to pieces that fit in one.
-bool Refiner::discard(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates) {
+bool BallRefinement::Impl::discard(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates) {
   const Point centroid = s.centroid();
   const auto covering = [&] {
     std::vector<CoverBall> cover;
     for (std::uint32_t b : candidates) {
       const RefinedBall& ball = balls_[b];
       if (ball.site.type > type) continue;
-      const double limit = covering_radius(type, ball.site.type, ball.radius);
+      const double limit = covering_radius(type, ball.site.type, ball.radius, deep_);
       if (!((s.closest_point(ball.site.position) - ball.site.position).norm() < limit)) continue;
       if (!cosmooth_(ball.site, site_on(s, centroid))) continue;
       cover.push_back({ball.site.position, limit});
@@ -295,7 +303,7 @@ bool Refiner::discard(StratumType type, const Subface& s, const std::vector<std:
   return covered_by(covering());  // the check may have shrunk a ball that covered the subface
 }
 
-void Refiner::protect_corners() {
+void BallRefinement::Impl::protect_corners() {
   corner_placed_.resize(strata_.corners.size(), false);
   for (Index c = 0; c < strata_.corners.size(); ++c) {
     if (corner_placed_[c]) continue;
@@ -308,7 +316,7 @@ void Refiner::protect_corners() {
   }
 }
 
-void Refiner::sample(StratumType type) {
+void BallRefinement::Impl::sample(StratumType type) {
   // Only the lost regions recorded so far can have lost cover; later losses are the next pass's.
   std::vector<geometry::Box> lost_boxes = std::move(lost_);
   lost_.clear();
@@ -398,7 +406,7 @@ void Refiner::sample(StratumType type) {
 // C3 within one stratum type. The lower envelope r'_p = min_q (r_q + L |p - q|) over the type's
 // balls is itself L-Lipschitz (the distance obeys the triangle inequality), so one pass computed
 // from the old radii suffices; it runs in parallel and is independent of the thread count.
-void Refiner::enforce_lipschitz(StratumType type) {
+void BallRefinement::Impl::enforce_lipschitz(StratumType type) {
   const auto start = Clock::now();
   const double L = options_.lipschitz;
   std::vector<std::uint32_t> ids;
@@ -424,7 +432,7 @@ void Refiner::enforce_lipschitz(StratumType type) {
 // C1 and C2 over dense samples: a ball holding a sample it is not co-smooth with shrinks to
 // 0.49 of the distance; two overlapping balls neither of which is co-smooth with the other's
 // centre both shrink apart.
-bool Refiner::sweep() {
+bool BallRefinement::Impl::sweep() {
   const auto start = Clock::now();
   const std::size_t n = balls_.size();
   std::vector<double> target(n);
@@ -454,10 +462,10 @@ bool Refiner::sweep() {
   return stats_.c1_shrinks != before;
 }
 
-std::vector<Ball> Refiner::run() {
-  int phase = 0;
-  for (stats_.rounds = 0;; ++stats_.rounds) {
-    if (static_cast<int>(stats_.rounds) >= options_.max_rounds) {
+void BallRefinement::Impl::run() {
+  int phase = std::min(restart_phase_, 2);
+  for (int round = 0;; ++round, ++stats_.rounds) {
+    if (round >= options_.max_rounds) {
       stats_.converged = false;
       break;
     }
@@ -488,24 +496,42 @@ std::vector<Ball> Refiner::run() {
     if (!sweep()) break;
     phase = lowest_shrunk_;
   }
+  restart_phase_ = 3;
+  for (int t = 0; t < 3; ++t) stats_.balls[t] = 0;
+  for (const RefinedBall& b : balls_.balls()) ++stats_.balls[static_cast<int>(b.site.type)];
+}
+
+BallRefinement::BallRefinement(const SurfaceMesh& mesh, const Strata& strata, const SizingField& sizing,
+                               const RefinementOptions& options, const ProgressCallback& progress,
+                               RefinementStats& stats) {
+  const auto start = Clock::now();
+  impl_ = std::make_unique<Impl>(mesh, strata, sizing, options, progress, stats);
+  stats.setup_seconds += seconds_since(start);
+}
+
+BallRefinement::~BallRefinement() = default;
+
+void BallRefinement::run() { impl_->run(); }
+
+const BallIndex& BallRefinement::index() const { return impl_->balls(); }
+
+std::vector<Ball> BallRefinement::balls() const {
   std::vector<Ball> out;
-  out.reserve(balls_.size());
-  for (const RefinedBall& b : balls_.balls()) {
-    out.push_back({b.site.position, b.radius, b.site.type, b.site.stratum});
-    ++stats_.balls[static_cast<int>(b.site.type)];
-  }
+  out.reserve(index().size());
+  for (const RefinedBall& b : index().balls()) out.push_back({b.site.position, b.radius, b.site.type, b.site.stratum});
   return out;
 }
 
-}  // namespace
+void BallRefinement::shrink(std::uint32_t ball, double radius) { impl_->shrink_for_slivers(ball, radius); }
+
+void BallRefinement::relax_deep_coverage() { impl_->relax_deep_coverage(); }
 
 std::vector<Ball> refine_balls(const SurfaceMesh& mesh, const Strata& strata, const SizingField& sizing,
                                const RefinementOptions& options, const ProgressCallback& progress,
                                RefinementStats& stats) {
-  const auto start = Clock::now();
-  Refiner refiner(mesh, strata, sizing, options, progress, stats);
-  stats.setup_seconds = seconds_since(start);
-  return refiner.run();
+  BallRefinement refinement(mesh, strata, sizing, options, progress, stats);
+  refinement.run();
+  return refinement.balls();
 }
 
 }  // namespace vorocrust

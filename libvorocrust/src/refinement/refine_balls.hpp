@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "features/strata.hpp"
@@ -28,6 +29,33 @@ struct RefinementOptions {
   int max_rounds = 200;  // safety net on the phase loop
 };
 
+class BallIndex;
+
+// The refinement as a state that outlives one run: sliver elimination (paper 2.4) shrinks balls
+// and runs the refinement again, which then resumes from the lowest stratum type it shrank and
+// only where cover was lost. Ball indices are stable: balls are added, never removed.
+class BallRefinement {
+ public:
+  BallRefinement(const SurfaceMesh& mesh, const Strata& strata, const SizingField& sizing,
+                 const RefinementOptions& options, const ProgressCallback& progress, RefinementStats& stats);
+  ~BallRefinement();
+
+  // Refines until C1-C4 hold again (the first call builds the whole union of balls).
+  void run();
+  std::vector<Ball> balls() const;
+  const BallIndex& index() const;
+  // Only shrinks (a larger radius is ignored); the next run() restores C1-C4 around the ball.
+  void shrink(std::uint32_t ball, double radius);
+  // Safe mode (paper 2.4): from now on alpha/2-deep coverage suffices, which bounds how often
+  // shrinking for slivers can ask for new balls, so sliver elimination always ends.
+  void relax_deep_coverage();
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// One run of the refinement from scratch.
 std::vector<Ball> refine_balls(const SurfaceMesh& mesh, const Strata& strata, const SizingField& sizing,
                                const RefinementOptions& options, const ProgressCallback& progress,
                                RefinementStats& stats);
