@@ -60,8 +60,9 @@ int main(int argc, char** argv) {
   mesh_cmd->add_option("--smoothing-iterations", mesh.options.smoothing_iterations,
                        "Rounds of adaptive Loop subdivision inside smooth patches before refinement")
       ->capture_default_str();
-  mesh_cmd->add_option("--stop-after", mesh.stop_after, "Stop after a stage and write its output: 'balls'")
-      ->check(CLI::IsMember({"balls"}));
+  mesh_cmd->add_option("--stop-after", mesh.stop_after, "Stop after a stage and write its output: 'balls' (balls.csv, balls.vtk) or 'surface' "
+                       "(also seeds.csv, surface.obj, surface.ply)")
+      ->check(CLI::IsMember({"balls", "surface"}));
   mesh_cmd->add_flag("--allow-self-intersections", mesh.allow_self_intersections,
                      "Mesh even when input faces intersect each other");
   mesh_cmd->add_flag("-q,--quiet", mesh.quiet, "Print nothing but errors");

@@ -58,34 +58,47 @@ int run_mesh(const MeshArgs& args) {
         std::fprintf(stderr, "vorocrust: %s: %s\n", to_string(f.severity), f.message.c_str());
       }
     }
-    // The stages after the refinement do not exist yet: run to the balls, write them, and then
-    // say "not yet" unless the balls were all that was asked for.
+    // The cells do not exist yet: run to the surface (or the balls), write what was made, and
+    // then say "not yet" unless that was all that was asked for.
     MeshOptions options = args.options;
-    options.stop_after = Stage::Balls;
+    options.stop_after = args.stop_after == "balls" ? Stage::Balls : Stage::Surface;
     result = generate_mesh(*mesh, options, progress.callback());
     report.result = &*result;
     progress.begin("writing");
     const std::filesystem::path out(args.output_dir);
+    // A file from an earlier run in the same folder must not pass for this run's.
+    const auto write_or_remove = [&](bool made, const char* name, const auto& write) {
+      if (made) {
+        write(out / name);
+      } else {
+        std::error_code ignored;
+        std::filesystem::remove(out / name, ignored);
+      }
+    };
     write_balls_csv(result->balls, out / "balls.csv");
     write_balls_vtk(result->balls, out / "balls.vtk");
     // The surface the balls cover, when smoothing changed it: `check-balls` verifies against it.
-    // A file from an earlier run in the same folder must not pass for this run's.
-    if (result->features.smoothing_iterations > 0) {
-      write_mesh(result->surface, out / "smoothed_surface.ply");
-    } else {
-      std::error_code ignored;
-      std::filesystem::remove(out / "smoothed_surface.ply", ignored);
-    }
+    write_or_remove(result->features.smoothing_iterations > 0, "smoothed_surface.ply",
+                    [&](const auto& path) { write_mesh(result->smoothed_input, path); });
+    const bool surface = options.stop_after >= Stage::Surface;
+    write_or_remove(surface, "seeds.csv", [&](const auto& path) { write_seeds_csv(result->seeds, path); });
+    write_or_remove(surface, "surface.obj", [&](const auto& path) { write_mesh(result->surface, path); });
+    write_or_remove(surface, "surface.ply", [&](const auto& path) { write_mesh(result->surface, path); });
     progress.finish();
     if (!args.quiet) {
       const RefinementStats& r = result->refinement;
       std::fprintf(stderr, "vorocrust: %zu balls (%zu corner, %zu crease, %zu patch) in %s\n",
                    r.balls[0] + r.balls[1] + r.balls[2], r.balls[0], r.balls[1], r.balls[2], args.output_dir.c_str());
+      if (surface) {
+        std::fprintf(stderr, "vorocrust: %zu surface seeds, a surface of %zu triangles after %zu rounds of sliver "
+                     "elimination\n", result->seeds.size(), result->surface.num_faces(),
+                     result->slivers.iterations.size() - 1);
+      }
     }
-    if (args.stop_after != "balls") {
+    if (args.stop_after.empty()) {
       throw Error(Error::Kind::NotImplemented,
-                  "not yet: surface seeds and cells (paper 2.4-2.5) are not implemented in this version; the "
-                  "balls are in " + (out / "balls.csv").string() + " (--stop-after balls asks for no more)");
+                  "not yet: interior seeds and Voronoi cells (paper 2.5) are not implemented in this version; the "
+                  "surface is in " + (out / "surface.obj").string() + " (--stop-after surface asks for no more)");
     }
     return finish("ok", "", kOk);
   } catch (const Error& e) {

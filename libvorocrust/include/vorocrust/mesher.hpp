@@ -13,12 +13,14 @@
 
 #include "vorocrust/balls.hpp"
 #include "vorocrust/progress.hpp"
+#include "vorocrust/seeds.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust {
 
-// How far the pipeline runs.
-enum class Stage { Balls, Cells };
+// How far the pipeline runs: the protecting balls (2.3), the surface seeds and the surface mesh
+// (2.4), or the whole Voronoi mesh.
+enum class Stage { Balls, Surface, Cells };
 
 struct MeshOptions {
   double lipschitz = 0.25;  // L < 1: how fast ball radii may vary
@@ -65,6 +67,22 @@ struct RefinementStats {
   double sweep_seconds = 0;                  // final C1/C2 sweep over dense samples
 };
 
+// One round of sliver elimination (paper 2.4, Figure 9): the triplets of overlapping balls as
+// found, how many had a half-covered seed pair, and the shrinking that followed.
+struct SliverIteration {
+  std::size_t balls = 0;
+  std::size_t triplets = 0;      // triplets whose spheres meet in two points
+  std::size_t half_covered = 0;  // of them, with exactly one point inside a fourth ball
+  std::size_t balls_shrunk = 0;
+  double max_shrinkage_ratio = 0;  // Delta: the largest (r - r') / r applied
+  double seconds = 0;              // finding the pairs, shrinking and refining again
+};
+
+struct SliverStats {
+  std::vector<SliverIteration> iterations;  // the last one found no half-covered pair
+  bool safe_mode = false;  // alpha/2-deep coverage accepted after 100 iterations
+};
+
 struct FeatureCounts {
   std::size_t sharp_edges = 0, corners = 0, creases = 0, patches = 0;
   std::size_t faces_after_smoothing = 0;
@@ -77,14 +95,19 @@ struct MeshResult {
   FeatureCounts features;
   // The surface the balls cover: the input after patch smoothing (paper 2.2), which keeps every
   // sharp feature exactly and moves only vertices inside smooth patches.
-  SurfaceMesh surface;
+  SurfaceMesh smoothed_input;
   std::vector<Ball> balls;
   RefinementStats refinement;
+  // From Stage::Surface on: the seeds (surface seeds first, two per seed pair) and the output
+  // surface, whose vertices are ball centres and whose faces carry the regions they separate.
+  std::vector<Seed> seeds;
+  SurfaceMesh surface;
+  SliverStats slivers;
 };
 
-// Runs the pipeline up to options.stop_after. Stages beyond the refinement are not implemented
-// yet: asking for them throws Error(NotImplemented) after the balls are made, and the balls
-// are not lost — call with stop_after = Stage::Balls to get them.
+// Runs the pipeline up to options.stop_after. The cells are not implemented yet: asking for them
+// throws Error(NotImplemented) — call with stop_after = Stage::Surface for the seeds and the
+// surface.
 MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, const ProgressCallback& progress = {});
 
 }  // namespace vorocrust

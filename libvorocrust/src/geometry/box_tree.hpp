@@ -47,6 +47,14 @@ class BoxTree {
   // Calls visit(item) for every item whose box overlaps `query` (closed boxes: touching counts).
   template <class Visit>
   void for_each_overlap(const Box& query, Visit&& visit) const {
+    for_each_where([&](const Box& box) { return box.overlaps(query); }, visit);
+  }
+
+  // Calls visit(item) for every item whose box passes `test`, descending only into nodes whose
+  // box passes it: `test` must hold for a node whenever it holds for a box inside it. It may
+  // change between calls (a ray query narrows as it finds hits).
+  template <class Test, class Visit>
+  void for_each_where(Test&& test, Visit&& visit) const {
     if (nodes_.empty()) return;
     // Median splits keep the depth below 33 for any 32-bit item count, and the stack never
     // holds more than one pending right child per level.
@@ -56,14 +64,14 @@ class BoxTree {
     while (top > 0) {
       const std::uint32_t index = stack[--top];
       const Node& node = nodes_[index];
-      if (!node.box.overlaps(query)) continue;
+      if (!test(node.box)) continue;
       if (node.count == 0) {
         stack[top++] = node.first_or_right;
         stack[top++] = index + 1;
         continue;
       }
       for (std::uint32_t k = node.first_or_right; k < node.first_or_right + node.count; ++k)
-        if (boxes_[items_[k]].overlaps(query)) visit(items_[k]);
+        if (test(boxes_[items_[k]])) visit(items_[k]);
     }
   }
 

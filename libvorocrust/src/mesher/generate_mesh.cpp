@@ -5,6 +5,8 @@
 #include "features/smooth_patches.hpp"
 #include "features/strata.hpp"
 #include "refinement/refine_balls.hpp"
+#include "seeds/eliminate_slivers.hpp"
+#include "seeds/surface_seeds.hpp"
 #include "refinement/sizing_field.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/mesher.hpp"
@@ -58,7 +60,7 @@ MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, c
   result.features.patches = strata.num_patches;
 
   // Patch smoothing (paper 2.2): flatten the patches so nearby normals agree, features untouched.
-  result.surface = input;
+  result.smoothed_input = input;
   if (options.smoothing_iterations > 0) {
     if (progress && !progress({"smoothing", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
     clock("smoothing", [&] {
@@ -78,29 +80,49 @@ MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, c
         }
         result.features.smoothing_iterations = smoothed.iterations;
         strata = std::move(carried);
-        result.surface = std::move(smoothed.mesh);
+        result.smoothed_input = std::move(smoothed.mesh);
         break;
       }
       return 0;
     });
   }
-  result.features.faces_after_smoothing = result.surface.num_faces();
-  const SurfaceMesh& surface = result.surface;
+  result.features.faces_after_smoothing = result.smoothed_input.num_faces();
+  const SurfaceMesh& surface = result.smoothed_input;
 
   // Refinement (paper 2.3).
   const SizingField sizing = options.sizing_file.empty() ? SizingField(options.max_size)
                                                          : SizingField(options.max_size, options.sizing_file);
-  RefinementOptions refinement;
-  refinement.lipschitz = options.lipschitz;
-  refinement.sharp_angle = sharp_angle;
-  refinement.seed = options.seed;
-  result.balls = clock("refinement", [&] {
-    return refine_balls(surface, strata, sizing, refinement, progress, result.refinement);
+  RefinementOptions refinement_options;
+  refinement_options.lipschitz = options.lipschitz;
+  refinement_options.sharp_angle = sharp_angle;
+  refinement_options.seed = options.seed;
+  BallRefinement refinement(surface, strata, sizing, refinement_options, progress, result.refinement);
+  clock("refinement", [&] {
+    refinement.run();
+    return 0;
   });
-  if (options.stop_after == Stage::Balls) return result;
+  if (options.stop_after == Stage::Balls) {
+    result.balls = refinement.balls();
+    return result;
+  }
+
+  // Surface seeds and sliver elimination (paper 2.4).
+  const SeedPairs pairs = clock("slivers", [&] {
+    return eliminate_slivers(refinement, SliverOptions{}, progress, result.slivers);
+  });
+  result.balls = refinement.balls();
+  SurfaceSeeds seeds = clock("surface seeds", [&] {
+    const RegionLocator regions(surface);
+    std::vector<std::string> names = surface.has_regions() ? surface.region_names
+                                                           : std::vector<std::string>{"outside", "inside"};
+    return surface_seeds(refinement.index(), pairs.uncovered, regions, std::move(names));
+  });
+  result.seeds = std::move(seeds.seeds);
+  result.surface = std::move(seeds.surface);
+  if (options.stop_after == Stage::Surface) return result;
   throw Error(Error::Kind::NotImplemented,
-              "not yet: surface seeds and cells (paper 2.4-2.5) are not implemented in this version; "
-              "run with --stop-after balls for the protecting balls");
+              "not yet: interior seeds and Voronoi cells (paper 2.5) are not implemented in this version; "
+              "run with --stop-after surface for the surface seeds and the surface mesh");
 }
 
 }  // namespace vorocrust

@@ -120,7 +120,9 @@ class BallRefinement::Impl {
   // Per element: kClean, kLostCover (a shrunk ball gave up part of it) or kUnsampled.
   static constexpr char kClean = 0, kLostCover = 1, kUnsampled = 2;
   std::vector<char> dirty_edge_, dirty_face_;
-  std::vector<geometry::Box> lost_;  // boxes of the balls that shrank, as they were before
+  // Boxes of the balls that shrank, as they were before, for the crease and the patch phase
+  // apart: each phase consumes its own, so a crease pass cannot take the patches' regions.
+  std::vector<geometry::Box> lost_edges_, lost_faces_;
   std::vector<bool> corner_placed_;
   int lowest_shrunk_ = 3;
   int restart_phase_ = 0;  // where the next run() starts: the lowest type shrunk since the last
@@ -173,7 +175,8 @@ void BallRefinement::Impl::mark_dirty(const Point& centre, double radius, Stratu
       dirty_face_[f] = std::max(dirty_face_[f], kLostCover);
     }
   });
-  lost_.push_back(query);
+  if (type <= StratumType::Crease) lost_edges_.push_back(query);
+  lost_faces_.push_back(query);
 }
 
 void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, std::size_t& counter) {
@@ -318,8 +321,9 @@ void BallRefinement::Impl::protect_corners() {
 
 void BallRefinement::Impl::sample(StratumType type) {
   // Only the lost regions recorded so far can have lost cover; later losses are the next pass's.
-  std::vector<geometry::Box> lost_boxes = std::move(lost_);
-  lost_.clear();
+  std::vector<geometry::Box>& lost = type == StratumType::Crease ? lost_edges_ : lost_faces_;
+  std::vector<geometry::Box> lost_boxes = std::move(lost);
+  lost.clear();
   std::vector<std::uint32_t> lost_items(lost_boxes.size());
   for (std::uint32_t i = 0; i < lost_items.size(); ++i) lost_items[i] = i;
   const geometry::BoxTree lost_tree(lost_boxes, std::move(lost_items));

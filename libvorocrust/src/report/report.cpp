@@ -85,7 +85,9 @@ std::string run_report_json(const RunReport& report, int indent) {
                 {"max_size", std::isfinite(o.max_size) ? json(o.max_size) : json(nullptr)},
                 {"smoothing_iterations", o.smoothing_iterations},
                 {"sizing_file", o.sizing_file.string()},
-                {"stop_after", o.stop_after == Stage::Balls ? "balls" : "cells"},
+                {"stop_after", o.stop_after == Stage::Balls     ? "balls"
+                               : o.stop_after == Stage::Surface ? "surface"
+                                                                : "cells"},
                 {"seed", o.seed},
                 {"threads", o.threads}}},
               {"status", report.status},
@@ -115,9 +117,35 @@ std::string run_report_json(const RunReport& report, int indent) {
         {"subdivisions", r.subdivisions},
         {"c1_shrinks", r.c1_shrinks},
         {"c3_shrinks", r.c3_shrinks},
+        {"sliver_shrinks", r.sliver_shrinks},
         {"rounds", r.rounds},
         {"boundary_samples", r.boundary_samples},
         {"converged", r.converged}};
+  }
+  if (report.result && !report.result->slivers.iterations.empty()) {
+    const MeshResult& m = *report.result;
+    // Paper Figure 9: per iteration, the share of triplets with a half-covered seed pair and the
+    // largest shrinkage ratio applied to remove them.
+    json rounds = json::array();
+    for (const SliverIteration& it : m.slivers.iterations) {
+      rounds.push_back({{"balls", it.balls},
+                        {"triplets", it.triplets},
+                        {"half_covered", it.half_covered},
+                        {"half_covered_percent", it.triplets ? 100.0 * it.half_covered / it.triplets : 0.0},
+                        {"balls_shrunk", it.balls_shrunk},
+                        {"max_shrinkage_ratio", it.max_shrinkage_ratio},
+                        {"seconds", it.seconds}});
+    }
+    doc["slivers"] = {{"iterations", m.slivers.iterations.size() - 1},
+                      {"half_covered_left", m.slivers.iterations.back().half_covered},
+                      {"safe_mode", m.slivers.safe_mode},
+                      {"per_iteration", rounds}};
+    std::size_t surface_seeds = 0;
+    for (const Seed& seed : m.seeds) surface_seeds += seed.kind == SeedKind::Surface;
+    doc["surface"] = {{"surface_seeds", surface_seeds},
+                      {"vertices", m.surface.num_vertices()},
+                      {"triangles", m.surface.num_faces()},
+                      {"regions", m.surface.region_names}};
   }
   if (report.mesh && report.input && report.validation) {
     doc["input"] = info_object(report.inputs, *report.mesh, *report.input, *report.validation);

@@ -1,0 +1,36 @@
+// vorocrust/seeds.hpp — the Voronoi seeds (paper sections 2.4 and 2.5).
+//
+// Surface seeds sit where the bounding spheres of three overlapping balls meet, one on each side
+// of the surface, and carry the region (material) of the side they lie on. Their Voronoi facets
+// between seeds of different regions form the output surface. Seeds and their labels are the
+// whole mesh in compact form: the Voronoi cells follow from them.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "vorocrust/surface_mesh.hpp"
+
+namespace vorocrust {
+
+enum class SeedKind : std::uint8_t { Surface, Interior, Outside };
+
+const char* to_string(SeedKind kind) noexcept;
+
+// Regions when the input names none: its closed shells bound one material.
+inline constexpr std::int32_t kOutsideRegion = 0;
+inline constexpr std::int32_t kInsideRegion = 1;
+
+struct Seed {
+  Point position;
+  std::int32_t region = kOutsideRegion;
+  double radius = 0;  // surface seeds: the mean radius of their three balls
+  SeedKind kind = SeedKind::Surface;
+};
+
+// OUTDIR/seeds.csv: `x,y,z,label,radius,kind`, 17 significant digits, written atomically.
+void write_seeds_csv(const std::vector<Seed>& seeds, const std::filesystem::path& path);
+
+}  // namespace vorocrust

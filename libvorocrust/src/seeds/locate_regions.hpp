@@ -1,0 +1,39 @@
+// Internal: the region of space a point lies in, read off the first input face a ray from the
+// point meets. Faces carry the regions on their two sides (SurfaceMesh::face_regions); a surface
+// without labels bounds one material, inside its faces' backs.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "geometry/box_tree.hpp"
+#include "vorocrust/surface_mesh.hpp"
+
+namespace vorocrust {
+
+class RegionLocator {
+ public:
+  explicit RegionLocator(const SurfaceMesh& surface);
+
+  // The region on p's side of the first face the ray from p along `direction` meets, or
+  // kOutsideRegion when the ray meets none. A hit too near an edge or too grazing to decide the
+  // side is retried along other directions. Thread-safe.
+  std::int32_t region_of(const Point& p, const Point& direction) const;
+
+  std::int32_t region_behind(Index face) const;
+  std::int32_t region_in_front(Index face) const;
+
+ private:
+  struct Hit {
+    double t;
+    Index face;
+    bool clear;  // far enough from the face's edges and not grazing
+    bool from_front;
+  };
+  Hit first_hit(const Point& p, const Point& direction) const;
+
+  const SurfaceMesh& surface_;
+  geometry::BoxTree faces_;
+};
+
+}  // namespace vorocrust

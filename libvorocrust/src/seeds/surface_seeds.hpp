@@ -1,0 +1,25 @@
+// Internal: labelled surface seeds and the surface mesh they bound (paper 2.4).
+#pragma once
+
+#include <vector>
+
+#include "seeds/locate_regions.hpp"
+#include "seeds/seed_pairs.hpp"
+#include "vorocrust/seeds.hpp"
+
+namespace vorocrust {
+
+struct SurfaceSeeds {
+  std::vector<Seed> seeds;  // two per seed pair, in the pairs' order
+  // The Voronoi facets between seeds of different regions. With no half-covered pair left each
+  // is the triangle of the three ball centres dual to its seed pair, so the vertices are ball
+  // centres: corners and crease points sit exactly on the input's features. Each face's normal
+  // points to the side of the lower region index (outwards from a single material).
+  SurfaceMesh surface;
+};
+
+// `region_names` names the regions of the labels RegionLocator gives.
+SurfaceSeeds surface_seeds(const BallIndex& balls, const std::vector<SeedPair>& pairs, const RegionLocator& regions,
+                           std::vector<std::string> region_names);
+
+}  // namespace vorocrust

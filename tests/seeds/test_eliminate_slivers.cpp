@@ -1,0 +1,64 @@
+// Seed pairs and sliver elimination on hand-made quartets (paper 2.4, Figure 8).
+#include <gtest/gtest.h>
+
+#include "refinement/ball_index.hpp"
+#include "seeds/eliminate_slivers.hpp"
+#include "seeds/seed_pairs.hpp"
+
+namespace vorocrust {
+namespace {
+
+SurfaceSite site_at(const Point& p) {
+  SurfaceSite s;
+  s.position = p;
+  return s;
+}
+
+// Four balls around a nearly flat quad: the diagonal a-c is slightly shorter than b-d, so the
+// two triangles through a-c are the surface and the quartet's fourth-ball coverage decides it.
+void flat_quad(BallIndex& balls, double lift, double radius) {
+  balls.add(site_at(Point(0, 0, 0)), radius);
+  balls.add(site_at(Point(1, 0, lift)), radius);
+  balls.add(site_at(Point(1.02, 1, 0)), radius);
+  balls.add(site_at(Point(0, 1, lift)), radius);
+}
+
+TEST(SeedPairs, ATetrahedronOfBallsGivesFourTripletsOnce) {
+  BallIndex balls;
+  flat_quad(balls, 0.0, 0.9);
+  const SeedPairs pairs = find_seed_pairs(balls);
+  EXPECT_EQ(pairs.triplets, 4u);
+  for (const SeedPair& p : pairs.uncovered) EXPECT_TRUE(p.balls[0] < p.balls[1] && p.balls[1] < p.balls[2]);
+}
+
+TEST(SeedPairs, APlanarQuartetHasNoHalfCoveredPair) {
+  // Centres in one plane: a fourth ball is as near to either point of a pair, so it covers both
+  // or neither.
+  BallIndex balls;
+  flat_quad(balls, 0.0, 0.8);
+  const SeedPairs pairs = find_seed_pairs(balls);
+  EXPECT_TRUE(pairs.half_covered.empty());
+  EXPECT_EQ(pairs.uncovered.size(), 2u);  // the two triangles across the shorter diagonal
+}
+
+TEST(SliverElimination, ShrinkingTheChosenBallsLeavesNoHalfCoveredPair) {
+  // Lifting two opposite centres makes the quartet a flat tetrahedron: a sliver.
+  BallIndex balls;
+  flat_quad(balls, 0.08, 0.8);
+  SeedPairs pairs = find_seed_pairs(balls);
+  ASSERT_FALSE(pairs.half_covered.empty());
+  const SliverShrinks shrinks = choose_sliver_shrinks(balls, pairs.half_covered);
+  ASSERT_FALSE(shrinks.radii.empty());
+  EXPECT_GT(shrinks.max_ratio, 0);
+  EXPECT_LT(shrinks.max_ratio, 0.5);
+  for (const auto& [ball, radius] : shrinks.radii) {
+    EXPECT_LT(radius, balls[ball].radius);
+    balls.shrink(ball, radius);
+  }
+  pairs = find_seed_pairs(balls);
+  EXPECT_TRUE(pairs.half_covered.empty());
+  EXPECT_EQ(pairs.uncovered.size(), 2u);  // Figure 8: two facets, no Steiner vertex
+}
+
+}  // namespace
+}  // namespace vorocrust
