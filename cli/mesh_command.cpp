@@ -23,7 +23,14 @@ int run_mesh(const MeshArgs& args) {
   RunReport report;
   report.command = args.command_line;
   report.inputs = args.inputs;
-  report.options = args.options;
+  // The cells do not exist yet: a run goes as far as the surface (or the balls), writes what was
+  // made, and then says "not yet" unless that was all that was asked for.
+  MeshOptions options = args.options;
+  options.stop_after = args.stop_after == "balls"     ? Stage::Balls
+                       : args.stop_after == "surface" ? Stage::Surface
+                                                      : Stage::Cells;
+  report.options = options;
+  if (options.stop_after == Stage::Cells) options.stop_after = Stage::Surface;
   const std::filesystem::path report_path = std::filesystem::path(args.output_dir) / "report.json";
   // report.json is written whatever the outcome, so a failed run still says why.
   const auto finish = [&](const std::string& status, const std::string& message, int code) {
@@ -58,10 +65,6 @@ int run_mesh(const MeshArgs& args) {
         std::fprintf(stderr, "vorocrust: %s: %s\n", to_string(f.severity), f.message.c_str());
       }
     }
-    // The cells do not exist yet: run to the surface (or the balls), write what was made, and
-    // then say "not yet" unless that was all that was asked for.
-    MeshOptions options = args.options;
-    options.stop_after = args.stop_after == "balls" ? Stage::Balls : Stage::Surface;
     result = generate_mesh(*mesh, options, progress.callback());
     report.result = &*result;
     progress.begin("writing");

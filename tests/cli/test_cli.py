@@ -3,6 +3,7 @@
 
 Run by CTest as: python3 test_cli.py VOROCRUST_BINARY MODELS_DIR TEST_DATA_DIR
 """
+import csv
 import json
 import os
 import subprocess
@@ -136,13 +137,13 @@ class Usage(unittest.TestCase):
 
 
 class Mesh(unittest.TestCase):
-    def test_makes_the_balls_then_says_not_yet_and_writes_report(self):
+    def test_makes_the_surface_then_says_not_yet_and_writes_report(self):
         with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "run")
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--seed", "7", "--threads", "1")
             self.assertEqual(r.returncode, 6, r.stderr)
             self.assertIn("not yet", r.stderr)
-            self.assertIn("--stop-after balls", r.stderr)
+            self.assertIn("--stop-after surface", r.stderr)
             # Not a terminal: plain progress lines, no carriage returns.
             self.assertIn("vorocrust: reading ...", r.stderr)
             self.assertNotIn("\r", r.stderr)
@@ -153,9 +154,44 @@ class Mesh(unittest.TestCase):
             self.assertEqual(report["options"]["threads"], 1)
             self.assertEqual(report["input"]["faces"], 446)
             self.assertEqual([t["phase"] for t in report["timings"]][:2], ["reading", "validating"])
-            self.assertEqual(sorted(os.listdir(out)), ["balls.csv", "balls.vtk", "report.json"])
+            self.assertEqual(sorted(os.listdir(out)),
+                             ["balls.csv", "balls.vtk", "report.json", "seeds.csv", "surface.obj", "surface.ply"])
             self.assertEqual(report["features"]["corners"], 12)
             self.assertEqual(report["refinement"]["balls"]["corner"], 12)
+            self.assertEqual(report["slivers"]["half_covered_left"], 0)
+
+    def test_surface_files_agree_with_the_report_and_stale_ones_go(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "run")
+            r = run("mesh", model("sandia_torus.obj"), "-o", out, "--stop-after", "surface", "-q")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            self.assertEqual(report["options"]["stop_after"], "surface")
+            slivers = report["slivers"]
+            self.assertEqual(slivers["iterations"] + 1, len(slivers["per_iteration"]))
+            self.assertEqual(slivers["per_iteration"][-1]["half_covered"], 0)
+            for it in slivers["per_iteration"][:-1]:
+                self.assertGreater(it["half_covered"], 0)
+                self.assertGreater(it["max_shrinkage_ratio"], 0)
+            with open(os.path.join(out, "seeds.csv")) as f:
+                rows = list(csv.DictReader(f))
+            self.assertEqual(list(rows[0].keys()), ["x", "y", "z", "label", "radius", "kind"])
+            self.assertEqual(len(rows), report["surface"]["surface_seeds"])
+            self.assertEqual({row["kind"] for row in rows}, {"surface"})
+            # The torus bounds one material: every facet separates a seed inside from one outside.
+            self.assertEqual(len(rows), 2 * report["surface"]["triangles"])
+            self.assertEqual({(rows[i]["label"], rows[i + 1]["label"]) for i in range(0, len(rows), 2)},
+                             {("0", "1"), ("1", "0")})
+            info = json.loads(run("info", "--json", os.path.join(out, "surface.ply")).stdout)
+            self.assertEqual(info["faces"], report["surface"]["triangles"])
+            self.assertEqual(info["genus"], 1)
+            self.assertEqual(info["boundary_edges"], 0)
+            self.assertEqual(sorted(info["regions"]), ["inside", "outside"])
+            # Stopping earlier in the same folder leaves no surface from the run before.
+            r = run("mesh", model("sandia_torus.obj"), "-o", out, "--stop-after", "balls", "-q")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertEqual(sorted(os.listdir(out)), ["balls.csv", "balls.vtk", "report.json"])
 
     def test_quiet_prints_only_the_error(self):
         with tempfile.TemporaryDirectory() as out:
