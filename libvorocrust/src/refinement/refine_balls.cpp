@@ -155,14 +155,14 @@ void Refiner::mark_dirty(const Point& centre, double radius, StratumType type) {
   if (type <= StratumType::Crease) {
     edge_tree_->for_each_overlap(query, [&](std::uint32_t e) {
       const auto [a, b] = strata_.topology.edges[e];
-      if (distance_to_segment(centre, mesh_.vertices[a], mesh_.vertices[b]) < radius) {
+      if (geometry::distance_to_segment(centre, mesh_.vertices[a], mesh_.vertices[b]) < radius) {
         dirty_edge_[e] = std::max(dirty_edge_[e], kLostCover);
       }
     });
   }
   face_tree_->for_each_overlap(query, [&](std::uint32_t f) {
     const Triangle& t = mesh_.triangles[f];
-    if (distance_to_triangle(centre, mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]]) < radius) {
+    if (geometry::distance_to_triangle(centre, mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]]) < radius) {
       dirty_face_[f] = std::max(dirty_face_[f], kLostCover);
     }
   });
