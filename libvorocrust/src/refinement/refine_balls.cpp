@@ -137,13 +137,7 @@ void Refiner::build_element_trees() {
     edges.push_back(e);
   }
   edge_tree_ = std::make_unique<geometry::BoxTree>(std::move(edge_boxes), std::move(edges));
-  std::vector<geometry::Box> face_boxes(mesh_.num_faces());
-  std::vector<std::uint32_t> faces(mesh_.num_faces());
-  for (std::uint32_t f = 0; f < faces.size(); ++f) {
-    for (Index v : mesh_.triangles[f]) face_boxes[f].include(mesh_.vertices[v]);
-    faces[f] = f;
-  }
-  face_tree_ = std::make_unique<geometry::BoxTree>(std::move(face_boxes), std::move(faces));
+  face_tree_ = std::make_unique<geometry::BoxTree>(geometry::face_tree(mesh_));
 }
 
 // Elements of the strata a ball of `type` could cover — its own type and the higher ones — that
