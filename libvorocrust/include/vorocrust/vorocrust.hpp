@@ -6,6 +6,7 @@
 #include "vorocrust/mesh_info.hpp"
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/progress.hpp"
+#include "vorocrust/quality.hpp"
 #include "vorocrust/read_mesh.hpp"
 #include "vorocrust/report.hpp"
 #include "vorocrust/surface_mesh.hpp"

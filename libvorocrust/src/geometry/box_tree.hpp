@@ -80,8 +80,11 @@ class BoxTree {
   // set inside the box). Nearer children are visited first and nodes no nearer than the best
   // item so far are skipped, so ties go to the item met first in a fixed order: equal trees and
   // points give equal answers. {kNoItem, infinity} for an empty tree.
+  // The search stops early at the first item whose squared distance is at most `good_enough`,
+  // for callers who need the nearest distance only when it exceeds that.
   template <class SquaredDistance>
-  std::pair<std::uint32_t, double> nearest(const Point& p, SquaredDistance&& squared_distance) const {
+  std::pair<std::uint32_t, double> nearest(const Point& p, SquaredDistance&& squared_distance,
+                                           double good_enough = -1) const {
     std::pair<std::uint32_t, double> best{kNoItem, std::numeric_limits<double>::infinity()};
     if (nodes_.empty()) return best;
     // Each level pops one node and pushes at most two, so the depth bound of for_each_overlap
@@ -111,6 +114,7 @@ class BoxTree {
         if (!(boxes_[item].squared_distance(p) < best.second)) continue;
         const double d = squared_distance(item);
         if (d < best.second) best = {item, d};
+        if (best.second <= good_enough) return best;
       }
     }
     return best;
