@@ -7,6 +7,7 @@
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/progress.hpp"
 #include "vorocrust/quality.hpp"
+#include "vorocrust/quality_svg.hpp"
 #include "vorocrust/read_mesh.hpp"
 #include "vorocrust/report.hpp"
 #include "vorocrust/surface_mesh.hpp"
