@@ -110,17 +110,21 @@ void draw_panel(std::ostream& svg, const HistogramPanel& panel, double top) {
         << "\" font-size=\"11\" text-anchor=\"middle\">" << value(edge) << "</text>\n";
   }
 
-  // The minimum (labelled to the left of its line) and the mean (to the right), so the two
-  // labels stay apart even when the lines nearly meet.
-  const auto mark = [&](double v, const char* name, const char* colour, const char* anchor, double shift) {
+  // The minimum labelled to the left of its line and the mean to the right, so the labels stay
+  // apart when the lines nearly meet; a label that would leave the page goes to the other side.
+  const auto mark = [&](double v, const std::string& name, const char* colour, bool left) {
     const double x = x_of(v);
+    const std::string text = name + ' ' + value(v);
+    const double width = 6.5 * static_cast<double>(text.size());  // about, at 11 units
+    if (left && x - width < 4) left = false;
+    if (!left && x + width > kWidth - 4) left = true;
     svg << "<path d=\"M" << coordinate(x) << ' ' << coordinate(y1 - 6) << " V" << coordinate(y0)
         << "\" stroke=\"" << colour << "\" stroke-width=\"1.5\" stroke-dasharray=\"5 3\"/>\n<text x=\""
-        << coordinate(x + shift) << "\" y=\"" << coordinate(y1 - 8) << "\" font-size=\"11\" fill=\"" << colour
-        << "\" text-anchor=\"" << anchor << "\">" << name << ' ' << value(v) << "</text>\n";
+        << coordinate(left ? x - 3 : x + 3) << "\" y=\"" << coordinate(y1 - 8) << "\" font-size=\"11\" fill=\""
+        << colour << "\" text-anchor=\"" << (left ? "end" : "start") << "\">" << escaped(text) << "</text>\n";
   };
-  mark(panel.min, "min", "#c0392b", "end", -3);
-  mark(panel.mean, "mean", "#1e8449", "start", 3);
+  mark(panel.min, "min", "#c0392b", true);
+  mark(panel.mean, "mean", "#1e8449", false);
 }
 
 }  // namespace
