@@ -11,8 +11,9 @@
 
 namespace vorocrust {
 
-// Every vertex a face uses, every edge midpoint, then `random_points` points uniform over the
-// surface's area, drawn from `seed`. Zero-area surfaces get no random points.
+// Every vertex a face uses, every edge midpoint, and `random_points` points uniform over the
+// surface's area, drawn from `seed`, all ordered along a space-filling curve. Zero-area surfaces
+// get no random points.
 std::vector<Point> surface_samples(const SurfaceMesh& mesh, const EdgeTopology& topology, std::size_t random_points,
                                    std::uint64_t seed);
 
