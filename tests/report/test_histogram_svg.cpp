@@ -40,7 +40,8 @@ TEST(HistogramSvg, DrawsEveryNonEmptyBinWithItsCountAndMarksMinAndMean) {
   EXPECT_NE(svg.find(">min 0.17<"), std::string::npos);
   EXPECT_NE(svg.find(">mean 0.86<"), std::string::npos);
   EXPECT_NE(svg.find(">6002 in 20 bins<"), std::string::npos);
-  for (const char* tick : {">0<", ">0.5<", ">1<"}) EXPECT_NE(svg.find(tick), std::string::npos) << tick;
+  for (const char* tick : {">0<", ">0.5<", ">1<", ">5000<"}) EXPECT_NE(svg.find(tick), std::string::npos) << tick;
+  EXPECT_EQ(svg.find("e+"), std::string::npos);  // counts are whole numbers, never 5e+03
   // The smallest bar is at least a hairline high.
   const std::regex bar("<rect x=\"[0-9.]+\" y=\"[0-9.]+\" width=\"[0-9.]+\" height=\"([0-9.]+)\" fill=\"#4a7fb5\"");
   for (auto it = std::sregex_iterator(svg.begin(), svg.end(), bar); it != std::sregex_iterator(); ++it)

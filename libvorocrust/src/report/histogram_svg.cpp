@@ -92,14 +92,15 @@ void draw_panel(std::ostream& svg, const HistogramPanel& panel, double top) {
     }
   }
 
-  // Axes and ticks: counts on the left, bin edges below (about ten labelled).
+  // Axes and ticks: counts on the left (whole numbers, the step being one at least), bin edges
+  // below (about ten labelled).
   svg << "<path d=\"M" << coordinate(x0) << ' ' << coordinate(y1) << " V" << coordinate(y0) << " H" << coordinate(x1)
       << "\" stroke=\"#333\" fill=\"none\"/>\n";
   for (double c = 0; c <= y_max * (1 + 1e-9); c += step) {
     const double y = y_of(c);
     svg << "<path d=\"M" << coordinate(x0 - 5) << ' ' << coordinate(y) << " H" << coordinate(x0)
         << "\" stroke=\"#333\"/>\n<text x=\"" << coordinate(x0 - 8) << "\" y=\"" << coordinate(y + 4)
-        << "\" font-size=\"11\" text-anchor=\"end\">" << value(c) << "</text>\n";
+        << "\" font-size=\"11\" text-anchor=\"end\">" << static_cast<std::size_t>(c) << "</text>\n";
   }
   const std::size_t every = (bins + 9) / 10;
   for (std::size_t k = 0; k <= bins; k += every) {
