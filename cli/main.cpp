@@ -6,6 +6,7 @@
 #include "check_balls_command.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "quality_command.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/version.hpp"
 
@@ -87,6 +88,19 @@ int main(int argc, char** argv) {
   check_cmd->add_option("--seed", check.seed, "Seed of the random samples")->capture_default_str();
   check_cmd->add_flag("--json", check.json, "Print one JSON object instead of text");
 
+  QualityArgs quality;
+  CLI::App* quality_cmd = app.add_subcommand(
+      "quality", "Measure a run's output surface (OUTDIR/surface.ply) against its input: angles, triangle quality, "
+                 "Hausdorff distance, topology; draws OUTDIR/quality.svg");
+  quality_cmd->add_option("OUTDIR", quality.output_dir, "Output folder of `vorocrust mesh`")->required();
+  quality_cmd->add_option("--input", quality.inputs,
+                          "Input meshes to compare with (default: the inputs named in OUTDIR/report.json)");
+  quality_cmd->add_option("--samples", quality.options.random_samples,
+                          "Random points per surface for the Hausdorff distance, on top of vertices and edge midpoints")
+      ->capture_default_str();
+  quality_cmd->add_option("--seed", quality.options.seed, "Seed of the random points")->capture_default_str();
+  quality_cmd->add_flag("--json", quality.json, "Print one JSON object instead of text");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -103,6 +117,7 @@ int main(int argc, char** argv) {
   try {
     if (*info_cmd) return run_info(info);
     if (*check_cmd) return run_check_balls(check);
+    if (*quality_cmd) return run_quality(quality);
     mesh.command_line.assign(argv, argv + argc);
     return run_mesh(mesh);
   } catch (const Error& e) {

@@ -23,6 +23,9 @@ struct ComponentInfo {
   std::size_t non_manifold_edges = 0;
   bool closed() const { return boundary_edges == 0; }
   bool manifold() const { return non_manifold_edges == 0; }
+  long euler_characteristic() const {  // V - E + F
+    return static_cast<long>(vertices) - static_cast<long>(edges) + static_cast<long>(faces);
+  }
   std::optional<int> genus;       // closed and manifold only
   std::optional<double> volume;   // signed enclosed volume, closed and manifold only
   double area = 0.0;

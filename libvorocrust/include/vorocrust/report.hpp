@@ -1,12 +1,15 @@
 // vorocrust/report.hpp — the JSON documents the front ends print and write (`info --json`,
-// OUTDIR/report.json), produced in one place so every front end says the same thing.
+// OUTDIR/report.json, `quality --json`), produced in one place so every front end says the same
+// thing.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "vorocrust/mesh_info.hpp"
 #include "vorocrust/mesher.hpp"
+#include "vorocrust/quality.hpp"
 #include "vorocrust/validate.hpp"
 
 namespace vorocrust {
@@ -30,5 +33,15 @@ struct RunReport {
 };
 
 std::string run_report_json(const RunReport& report, int indent = 2);
+
+// The `inputs` list of an OUTDIR/report.json, as the run was given them (relative paths are
+// relative to the folder that run started in). Throws Error(UnreadableInput) naming the file
+// when it is missing, is not JSON or has no list of input paths.
+std::vector<std::string> run_report_inputs(const std::filesystem::path& report_json);
+
+// The surface-quality figures (quality.hpp) as one JSON object, every key saying its unit:
+// angles in degrees, shares in percent, distances in the input's units and in percent of its
+// bounding-box diagonal.
+std::string surface_quality_json(const SurfaceQuality& quality, int indent = 2);
 
 }  // namespace vorocrust

@@ -6,6 +6,8 @@
 #include "vorocrust/mesh_info.hpp"
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/progress.hpp"
+#include "vorocrust/quality.hpp"
+#include "vorocrust/quality_svg.hpp"
 #include "vorocrust/read_mesh.hpp"
 #include "vorocrust/report.hpp"
 #include "vorocrust/surface_mesh.hpp"

@@ -1,11 +1,13 @@
 // Internal: a bounding-volume hierarchy over axis-aligned boxes, for "which items are near this
-// box" queries: faces against faces in the self-intersection search, input elements against
-// balls in the refinement.
+// box" queries (faces against faces in the self-intersection search, input elements against
+// balls in the refinement) and "which item is nearest to this point" queries (sample points
+// against a surface in the Hausdorff distance).
 #pragma once
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "vorocrust/surface_mesh.hpp"
@@ -27,6 +29,10 @@ struct Box {
   }
   bool overlaps(const Box& b) const {
     return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all();
+  }
+  // 0 inside the box; infinite for the empty box.
+  double squared_distance(const Point& p) const {
+    return (lo - p).cwiseMax(p - hi).cwiseMax(0.0).squaredNorm();
   }
 };
 
@@ -75,6 +81,53 @@ class BoxTree {
     }
   }
 
+  static constexpr std::uint32_t kNoItem = std::numeric_limits<std::uint32_t>::max();
+
+  // The item nearest to `p` and its squared distance, as `squared_distance(item)` measures it,
+  // which must never be less than the item box's squared distance to `p` (true of any point
+  // set inside the box). Nearer children are visited first and nodes no nearer than the best
+  // item so far are skipped, so ties go to the item met first in a fixed order: equal trees and
+  // points give equal answers. {kNoItem, infinity} for an empty tree.
+  // The search stops early at the first item whose squared distance is at most `good_enough`,
+  // for callers who need the nearest distance only when it exceeds that.
+  template <class SquaredDistance>
+  std::pair<std::uint32_t, double> nearest(const Point& p, SquaredDistance&& squared_distance,
+                                           double good_enough = -1) const {
+    std::pair<std::uint32_t, double> best{kNoItem, std::numeric_limits<double>::infinity()};
+    if (nodes_.empty()) return best;
+    // Each level pops one node and pushes at most two, so the depth bound of for_each_overlap
+    // holds here too.
+    std::pair<std::uint32_t, double> stack[64];
+    int top = 0;
+    stack[top++] = {0, nodes_[0].box.squared_distance(p)};
+    while (top > 0) {
+      const auto [index, node_distance] = stack[--top];
+      if (!(node_distance < best.second)) continue;
+      const Node& node = nodes_[index];
+      if (node.count == 0) {
+        const std::uint32_t left = index + 1, right = node.first_or_right;
+        const double to_left = nodes_[left].box.squared_distance(p), to_right = nodes_[right].box.squared_distance(p);
+        // The nearer child goes on top, to be searched first.
+        if (to_left <= to_right) {
+          stack[top++] = {right, to_right};
+          stack[top++] = {left, to_left};
+        } else {
+          stack[top++] = {left, to_left};
+          stack[top++] = {right, to_right};
+        }
+        continue;
+      }
+      for (std::uint32_t k = node.first_or_right; k < node.first_or_right + node.count; ++k) {
+        const std::uint32_t item = items_[k];
+        if (!(boxes_[item].squared_distance(p) < best.second)) continue;
+        const double d = squared_distance(item);
+        if (d < best.second) best = {item, d};
+        if (best.second <= good_enough) return best;
+      }
+    }
+    return best;
+  }
+
  private:
   static constexpr std::uint32_t kLeafSize = 4;
 
@@ -118,5 +171,16 @@ class BoxTree {
   std::vector<std::uint32_t> items_;
   std::vector<Node> nodes_;
 };
+
+// A tree over every face of `mesh`, its items the face indices.
+inline BoxTree face_tree(const SurfaceMesh& mesh) {
+  std::vector<Box> boxes(mesh.num_faces());
+  std::vector<std::uint32_t> faces(mesh.num_faces());
+  for (std::uint32_t f = 0; f < faces.size(); ++f) {
+    for (Index v : mesh.triangles[f]) boxes[f].include(mesh.vertices[v]);
+    faces[f] = f;
+  }
+  return BoxTree(std::move(boxes), std::move(faces));
+}
 
 }  // namespace vorocrust::geometry

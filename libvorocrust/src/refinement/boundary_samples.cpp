@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "geometry/surface_sampling.hpp"
 #include "refinement/point_cloud.hpp"
 #include "refinement/subface.hpp"
 
@@ -17,24 +18,6 @@ struct SitePosition {
 };
 using Adaptor = PointCloudAdaptor<SurfaceSite, SitePosition>;
 using Tree = StaticKdTree<Adaptor>;
-
-// Picks an index with probability proportional to its weight.
-class WeightedPick {
- public:
-  explicit WeightedPick(const std::vector<double>& weights) : prefix_(weights.size()) {
-    double sum = 0;
-    for (std::size_t i = 0; i < weights.size(); ++i) prefix_[i] = sum += weights[i];
-  }
-  double total() const { return prefix_.empty() ? 0 : prefix_.back(); }
-  std::size_t operator()(double u) const {  // u uniform in [0, 1)
-    const double target = u * total();
-    const auto it = std::upper_bound(prefix_.begin(), prefix_.end(), target);
-    return std::min<std::size_t>(it - prefix_.begin(), prefix_.size() - 1);
-  }
-
- private:
-  std::vector<double> prefix_;
-};
 
 }  // namespace
 
@@ -75,7 +58,7 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
     }
   }
   if (!crease_edges.empty()) {
-    const WeightedPick pick(lengths);
+    const geometry::WeightedPick pick(lengths);
     const std::size_t n = std::clamp(counts.crease_per_edge * crease_edges.size(), counts.crease_min, counts.crease_max);
     for (std::size_t k = 0; k < n; ++k) {
       const Index e = crease_edges[pick(unit(rng))];
@@ -97,7 +80,7 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
     patch.push_back(patch_site(strata, f, 0.05 * a + 0.05 * b + 0.9 * c));
   }
   if (mesh.num_faces() > 0) {
-    const WeightedPick pick(areas);
+    const geometry::WeightedPick pick(areas);
     const std::size_t n = std::clamp(counts.patch_per_face * mesh.num_faces(), counts.patch_min, counts.patch_max);
     for (std::size_t k = 0; k < n; ++k) {
       const Index f = static_cast<Index>(pick(unit(rng)));

@@ -146,13 +146,7 @@ void BallRefinement::Impl::build_element_trees() {
     edges.push_back(e);
   }
   edge_tree_ = std::make_unique<geometry::BoxTree>(std::move(edge_boxes), std::move(edges));
-  std::vector<geometry::Box> face_boxes(mesh_.num_faces());
-  std::vector<std::uint32_t> faces(mesh_.num_faces());
-  for (std::uint32_t f = 0; f < faces.size(); ++f) {
-    for (Index v : mesh_.triangles[f]) face_boxes[f].include(mesh_.vertices[v]);
-    faces[f] = f;
-  }
-  face_tree_ = std::make_unique<geometry::BoxTree>(std::move(face_boxes), std::move(faces));
+  face_tree_ = std::make_unique<geometry::BoxTree>(geometry::face_tree(mesh_));
 }
 
 // Elements of the strata a ball of `type` could cover — its own type and the higher ones — that
@@ -164,14 +158,14 @@ void BallRefinement::Impl::mark_dirty(const Point& centre, double radius, Stratu
   if (type <= StratumType::Crease) {
     edge_tree_->for_each_overlap(query, [&](std::uint32_t e) {
       const auto [a, b] = strata_.topology.edges[e];
-      if (distance_to_segment(centre, mesh_.vertices[a], mesh_.vertices[b]) < radius) {
+      if (geometry::distance_to_segment(centre, mesh_.vertices[a], mesh_.vertices[b]) < radius) {
         dirty_edge_[e] = std::max(dirty_edge_[e], kLostCover);
       }
     });
   }
   face_tree_->for_each_overlap(query, [&](std::uint32_t f) {
     const Triangle& t = mesh_.triangles[f];
-    if (distance_to_triangle(centre, mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]]) < radius) {
+    if (geometry::distance_to_triangle(centre, mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]]) < radius) {
       dirty_face_[f] = std::max(dirty_face_[f], kLostCover);
     }
   });

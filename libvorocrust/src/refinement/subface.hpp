@@ -8,14 +8,11 @@
 #include <cmath>
 #include <random>
 
+#include "geometry/closest_point.hpp"
+#include "geometry/surface_sampling.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust {
-
-double distance_to_segment(const Point& p, const Point& a, const Point& b);
-double distance_to_triangle(const Point& p, const Point& a, const Point& b, const Point& c);
-Point closest_on_segment(const Point& p, const Point& a, const Point& b);
-Point closest_on_triangle(const Point& p, const Point& a, const Point& b, const Point& c);
 
 class Subface {
  public:
@@ -38,14 +35,14 @@ class Subface {
     return r;
   }
   Point closest_point(const Point& q) const {
-    return is_segment() ? closest_on_segment(q, p_[0], p_[1]) : closest_on_triangle(q, p_[0], p_[1], p_[2]);
+    return is_segment() ? geometry::closest_on_segment(q, p_[0], p_[1])
+                        : geometry::closest_on_triangle(q, p_[0], p_[1], p_[2]);
   }
   Point random_point(std::mt19937_64& rng, std::uniform_real_distribution<double>& unit) const {
-    double u = unit(rng);
+    const double u = unit(rng);
     if (is_segment()) return p_[0] + u * (p_[1] - p_[0]);
-    double v = unit(rng);
-    if (u + v > 1) u = 1 - u, v = 1 - v;
-    return p_[0] + u * (p_[1] - p_[0]) + v * (p_[2] - p_[0]);
+    const double v = unit(rng);
+    return geometry::point_in_triangle(p_[0], p_[1], p_[2], u, v);
   }
   // Two halves of a segment, four quarters of a triangle (the unused slots are segments of zero
   // measure, which callers skip).

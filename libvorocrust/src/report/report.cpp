@@ -1,8 +1,11 @@
 #include "vorocrust/report.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
+#include "vorocrust/error.hpp"
 #include "vorocrust/version.hpp"
 
 namespace vorocrust {
@@ -59,6 +62,42 @@ json info_object(const std::vector<std::string>& inputs, const SurfaceMesh& mesh
           {"shell_volumes", volumes},
           {"findings", findings},
           {"valid", !validation.has_errors()}};
+}
+
+json topology_object(const SurfaceTopology& t) {
+  return {{"components", t.components},
+          {"euler_characteristic", t.euler_characteristic},
+          {"closed", t.closed},
+          {"boundary_edges", t.boundary_edges},
+          {"non_manifold_edges", t.non_manifold_edges}};
+}
+
+// The paper's section 3 figures: angle bounds and shares, minimum triangle quality, the
+// Hausdorff distance relative to the bounding-box diagonal; with the counts behind them.
+json quality_object(const SurfaceQuality& q) {
+  return {{"triangles", q.triangles},
+          {"angles",
+           {{"min_degrees", q.min_angle_degrees},
+            {"max_degrees", q.max_angle_degrees},
+            {"percent_below_30_degrees", q.percent_angles_below_30},
+            {"percent_above_90_degrees", q.percent_angles_above_90}}},
+          {"triangle_quality",
+           {{"definition", "6 area / (sqrt(3) longest_edge half_perimeter); 1 for the equilateral triangle"},
+            {"min", q.min_quality},
+            {"mean", q.mean_quality},
+            {"histogram", {{"low", 0.0}, {"high", 1.0}, {"counts", q.quality_histogram}}}}},
+          {"hausdorff",
+           {{"distance", q.hausdorff},
+            {"percent_of_bounding_box_diagonal", 100.0 * q.hausdorff_relative},
+            {"input_to_output", q.input_to_output},
+            {"output_to_input", q.output_to_input},
+            {"bounding_box_diagonal", q.bounding_box_diagonal},
+            {"input_samples", q.input_samples},
+            {"output_samples", q.output_samples}}},
+          {"topology",
+           {{"matches", q.topology_matches},
+            {"input", topology_object(q.input_topology)},
+            {"output", topology_object(q.output_topology)}}}};
 }
 
 }  // namespace
@@ -152,5 +191,29 @@ std::string run_report_json(const RunReport& report, int indent) {
   }
   return doc.dump(indent);
 }
+
+std::vector<std::string> run_report_inputs(const std::filesystem::path& report_json) {
+  const auto fail = [&](const std::string& why) {
+    throw Error(Error::Kind::UnreadableInput, why, {.file = report_json.string()});
+  };
+  std::ifstream in(report_json, std::ios::binary);
+  if (!in) fail(std::filesystem::exists(report_json) ? "cannot open" : "cannot open: no such file");
+  std::stringstream text;
+  text << in.rdbuf();
+  const json doc = json::parse(text.str(), nullptr, false);
+  if (doc.is_discarded()) fail("not a JSON document");
+  const auto inputs = doc.find("inputs");
+  if (!doc.is_object() || inputs == doc.end() || !inputs->is_array() || inputs->empty()) {
+    fail("no 'inputs' list of model files");
+  }
+  std::vector<std::string> paths;
+  for (const json& path : *inputs) {
+    if (!path.is_string()) fail("'inputs' holds something other than file names");
+    paths.push_back(path.get<std::string>());
+  }
+  return paths;
+}
+
+std::string surface_quality_json(const SurfaceQuality& quality, int indent) { return quality_object(quality).dump(indent); }
 
 }  // namespace vorocrust

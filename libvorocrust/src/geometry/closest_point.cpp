@@ -1,6 +1,9 @@
-#include "refinement/subface.hpp"
+#include "geometry/closest_point.hpp"
 
-namespace vorocrust {
+#include <algorithm>
+#include <iterator>
+
+namespace vorocrust::geometry {
 
 Point closest_on_segment(const Point& p, const Point& a, const Point& b) {
   const Point ab = b - a;
@@ -42,4 +45,4 @@ double distance_to_triangle(const Point& p, const Point& a, const Point& b, cons
   return (closest_on_triangle(p, a, b, c) - p).norm();
 }
 
-}  // namespace vorocrust
+}  // namespace vorocrust::geometry

@@ -1,0 +1,32 @@
+// vorocrust/quality_svg.hpp — histograms drawn as one standalone SVG picture, as
+// OUTDIR/quality.svg shows the triangle quality (and later the cell aspect ratios).
+//
+// Panels stack top to bottom under the title. Each draws its bins as bars over an x axis from
+// `low` to `high`, with ticks on both axes, every non-empty bin's count above its bar (and at
+// least a hairline of bar, so a handful of bad elements among thousands still shows), and the
+// minimum and the mean marked by labelled vertical lines. Numbers are written the same whatever
+// the program's locale.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace vorocrust {
+
+struct HistogramPanel {
+  std::string label;                // what is counted, with its unit: "triangle quality Q"
+  double low = 0, high = 1;         // the bins split [low, high] evenly
+  std::vector<std::size_t> counts;  // one per bin, at least one bin
+  double min = 0, mean = 0;         // of the values counted, marked on the axis
+};
+
+// The picture as text. Throws Error(Usage) for a panel without bins or with high <= low.
+std::string histogram_svg(const std::string& title, const std::vector<HistogramPanel>& panels);
+
+// The same, written atomically to `path` (atomic_file.hpp); throws Error(Output) when it cannot be.
+void write_histogram_svg(const std::filesystem::path& path, const std::string& title,
+                         const std::vector<HistogramPanel>& panels);
+
+}  // namespace vorocrust

@@ -1,0 +1,155 @@
+// Histograms as SVG: plain shapes and text, no script or style sheet, so any viewer shows them.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <locale>
+#include <numeric>
+#include <sstream>
+
+#include "vorocrust/atomic_file.hpp"
+#include "vorocrust/error.hpp"
+#include "vorocrust/quality_svg.hpp"
+
+namespace vorocrust {
+
+namespace {
+
+// Page and panel geometry, in SVG user units (pixels).
+constexpr double kWidth = 720, kTitleHeight = 40, kPanelHeight = 280;
+constexpr double kLeft = 70, kRight = 24, kTop = 56, kBottom = 48;  // plot margins inside a panel
+
+// std::to_chars ignores the locale, unlike printf and streams: a host application running in a
+// locale with decimal commas still gets valid SVG.
+std::string number(double x, std::chars_format format, int precision) {
+  char buffer[64];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x, format, precision).ptr;
+  return std::string(buffer, end);
+}
+std::string coordinate(double x) { return number(x, std::chars_format::fixed, 1); }
+std::string value(double x) { return number(x, std::chars_format::general, 4); }
+
+std::string escaped(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// The smallest of 1, 2, 5 times a power of ten that is at least x (x > 0).
+double nice_step(double x) {
+  const double power = std::pow(10.0, std::floor(std::log10(x)));
+  for (double m : {1.0, 2.0, 5.0, 10.0})
+    if (m * power >= x) return m * power;
+  return 10 * power;
+}
+
+void check(const HistogramPanel& panel) {
+  if (panel.counts.empty()) throw Error(Error::Kind::Usage, "histogram '" + panel.label + "' has no bins");
+  if (!(panel.high > panel.low)) {
+    throw Error(Error::Kind::Usage, "histogram '" + panel.label + "' needs low < high, got " + value(panel.low) +
+                                        " and " + value(panel.high));
+  }
+}
+
+void draw_panel(std::ostream& svg, const HistogramPanel& panel, double top) {
+  const double x0 = kLeft, x1 = kWidth - kRight, y0 = top + kPanelHeight - kBottom, y1 = top + kTop;
+  const std::size_t bins = panel.counts.size();
+  const std::size_t total = std::accumulate(panel.counts.begin(), panel.counts.end(), std::size_t{0});
+  const std::size_t largest = *std::max_element(panel.counts.begin(), panel.counts.end());
+  const double step = nice_step(std::max<double>(1, static_cast<double>(largest) / 4));
+  // Headroom above the tallest bar for its count.
+  const double y_max = step * std::max(1.0, std::ceil(1.1 * static_cast<double>(largest) / step));
+  const auto x_of = [&](double v) {
+    return x0 + (x1 - x0) * std::clamp((v - panel.low) / (panel.high - panel.low), 0.0, 1.0);
+  };
+  const auto y_of = [&](double count) { return y0 - (y0 - y1) * count / y_max; };
+  const double bar = (x1 - x0) / static_cast<double>(bins);
+
+  svg << "<text x=\"" << coordinate(x0) << "\" y=\"" << coordinate(top + 24) << "\" font-size=\"15\">"
+      << escaped(panel.label) << "</text>\n";
+  svg << "<text x=\"" << coordinate(x1) << "\" y=\"" << coordinate(top + 24)
+      << "\" font-size=\"12\" text-anchor=\"end\" fill=\"#555\">" << total << " in " << bins << " bins</text>\n";
+
+  // Bars, each non-empty one at least a hairline high, with its count above it where it fits.
+  const bool label_counts = bar >= 14;
+  for (std::size_t k = 0; k < bins; ++k) {
+    const std::size_t n = panel.counts[k];
+    if (n == 0) continue;
+    const double y = std::min(y_of(static_cast<double>(n)), y0 - 1.0);
+    svg << "<rect x=\"" << coordinate(x0 + bar * static_cast<double>(k) + 1) << "\" y=\"" << coordinate(y)
+        << "\" width=\"" << coordinate(std::max(1.0, bar - 2)) << "\" height=\"" << coordinate(y0 - y)
+        << "\" fill=\"#4a7fb5\"/>\n";
+    if (label_counts) {
+      svg << "<text x=\"" << coordinate(x0 + bar * (static_cast<double>(k) + 0.5)) << "\" y=\""
+          << coordinate(y - 3) << "\" font-size=\"9\" text-anchor=\"middle\">" << n << "</text>\n";
+    }
+  }
+
+  // Axes and ticks: counts on the left (whole numbers, the step being one at least), bin edges
+  // below (about ten labelled).
+  svg << "<path d=\"M" << coordinate(x0) << ' ' << coordinate(y1) << " V" << coordinate(y0) << " H" << coordinate(x1)
+      << "\" stroke=\"#333\" fill=\"none\"/>\n";
+  for (double c = 0; c <= y_max * (1 + 1e-9); c += step) {
+    const double y = y_of(c);
+    svg << "<path d=\"M" << coordinate(x0 - 5) << ' ' << coordinate(y) << " H" << coordinate(x0)
+        << "\" stroke=\"#333\"/>\n<text x=\"" << coordinate(x0 - 8) << "\" y=\"" << coordinate(y + 4)
+        << "\" font-size=\"11\" text-anchor=\"end\">" << static_cast<std::size_t>(c) << "</text>\n";
+  }
+  const std::size_t every = (bins + 9) / 10;
+  for (std::size_t k = 0; k <= bins; k += every) {
+    const double x = x0 + bar * static_cast<double>(k);
+    const double edge = panel.low + (panel.high - panel.low) * static_cast<double>(k) / static_cast<double>(bins);
+    svg << "<path d=\"M" << coordinate(x) << ' ' << coordinate(y0) << " V" << coordinate(y0 + 5)
+        << "\" stroke=\"#333\"/>\n<text x=\"" << coordinate(x) << "\" y=\"" << coordinate(y0 + 18)
+        << "\" font-size=\"11\" text-anchor=\"middle\">" << value(edge) << "</text>\n";
+  }
+
+  // The minimum labelled to the left of its line and the mean to the right, so the labels stay
+  // apart when the lines nearly meet; a label that would leave the page goes to the other side.
+  const auto mark = [&](double v, const std::string& name, const char* colour, bool left) {
+    const double x = x_of(v);
+    const std::string text = name + ' ' + value(v);
+    const double width = 6.5 * static_cast<double>(text.size());  // about, at 11 units
+    if (left && x - width < 4) left = false;
+    if (!left && x + width > kWidth - 4) left = true;
+    svg << "<path d=\"M" << coordinate(x) << ' ' << coordinate(y1 - 6) << " V" << coordinate(y0)
+        << "\" stroke=\"" << colour << "\" stroke-width=\"1.5\" stroke-dasharray=\"5 3\"/>\n<text x=\""
+        << coordinate(left ? x - 3 : x + 3) << "\" y=\"" << coordinate(y1 - 8) << "\" font-size=\"11\" fill=\""
+        << colour << "\" text-anchor=\"" << (left ? "end" : "start") << "\">" << escaped(text) << "</text>\n";
+  };
+  mark(panel.min, "min", "#c0392b", true);
+  mark(panel.mean, "mean", "#1e8449", false);
+}
+
+}  // namespace
+
+std::string histogram_svg(const std::string& title, const std::vector<HistogramPanel>& panels) {
+  for (const HistogramPanel& panel : panels) check(panel);
+  const double height = kTitleHeight + kPanelHeight * static_cast<double>(panels.size());
+  std::ostringstream svg;
+  svg.imbue(std::locale::classic());  // counts without thousands separators, whatever the global locale
+  svg << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" width=\""
+      << coordinate(kWidth) << "\" height=\"" << coordinate(height) << "\" viewBox=\"0 0 " << coordinate(kWidth)
+      << ' ' << coordinate(height) << "\" font-family=\"sans-serif\">\n<title>" << escaped(title) << "</title>\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n<text x=\"" << coordinate(kWidth / 2)
+      << "\" y=\"26\" font-size=\"17\" text-anchor=\"middle\">" << escaped(title) << "</text>\n";
+  for (std::size_t i = 0; i < panels.size(); ++i) {
+    draw_panel(svg, panels[i], kTitleHeight + kPanelHeight * static_cast<double>(i));
+  }
+  svg << "</svg>\n";
+  return svg.str();
+}
+
+void write_histogram_svg(const std::filesystem::path& path, const std::string& title,
+                         const std::vector<HistogramPanel>& panels) {
+  write_file_atomically(path, histogram_svg(title, panels));
+}
+
+}  // namespace vorocrust

@@ -1,0 +1,84 @@
+// The histogram picture: what it must show, escaped, stacked and written whole.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "test_support.hpp"
+#include "vorocrust/error.hpp"
+#include "vorocrust/quality_svg.hpp"
+
+namespace vorocrust {
+namespace {
+
+HistogramPanel quality_panel() {
+  HistogramPanel p;
+  p.label = "triangle quality Q";
+  p.counts = std::vector<std::size_t>(20, 0);
+  p.counts[3] = 2;  // two bad triangles among thousands must still show
+  p.counts[16] = 800;
+  p.counts[17] = 4000;
+  p.counts[19] = 1200;
+  p.min = 0.17;
+  p.mean = 0.86;
+  return p;
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+TEST(HistogramSvg, DrawsEveryNonEmptyBinWithItsCountAndMarksMinAndMean) {
+  const std::string svg = histogram_svg("surface quality", {quality_panel()});
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  EXPECT_NE(svg.find("</svg>"), std::string::npos);
+  EXPECT_EQ(occurrences(svg, "fill=\"#4a7fb5\""), 4u);  // one bar per non-empty bin
+  for (const char* count : {">2<", ">800<", ">4000<", ">1200<"}) EXPECT_NE(svg.find(count), std::string::npos) << count;
+  EXPECT_NE(svg.find(">min 0.17<"), std::string::npos);
+  EXPECT_NE(svg.find(">mean 0.86<"), std::string::npos);
+  EXPECT_NE(svg.find(">6002 in 20 bins<"), std::string::npos);
+  for (const char* tick : {">0<", ">0.5<", ">1<", ">5000<"}) EXPECT_NE(svg.find(tick), std::string::npos) << tick;
+  EXPECT_EQ(svg.find("e+"), std::string::npos);  // counts are whole numbers, never 5e+03
+  // The smallest bar is at least a hairline high.
+  const std::regex bar("<rect x=\"[0-9.]+\" y=\"[0-9.]+\" width=\"[0-9.]+\" height=\"([0-9.]+)\" fill=\"#4a7fb5\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), bar); it != std::sregex_iterator(); ++it)
+    EXPECT_GE(std::stod((*it)[1]), 1.0);
+}
+
+TEST(HistogramSvg, StacksPanelsAndEscapesText) {
+  HistogramPanel second = quality_panel();
+  second.label = "cell aspect ratio <circumradius & inradius>";
+  second.low = 1;
+  second.high = 11;
+  const std::string svg = histogram_svg("a \"title\"", {quality_panel(), second});
+  EXPECT_NE(svg.find("cell aspect ratio &lt;circumradius &amp; inradius&gt;"), std::string::npos);
+  EXPECT_NE(svg.find("a &quot;title&quot;"), std::string::npos);
+  EXPECT_EQ(svg.find("<circumradius"), std::string::npos);
+  EXPECT_NE(svg.find("height=\"600.0\""), std::string::npos);  // title and two panels
+  EXPECT_NE(svg.find(">11<"), std::string::npos);
+}
+
+TEST(HistogramSvg, RefusesPanelsWithoutBinsOrRange) {
+  HistogramPanel empty = quality_panel();
+  empty.counts.clear();
+  EXPECT_THROW(histogram_svg("q", {empty}), Error);
+  HistogramPanel flat = quality_panel();
+  flat.high = flat.low;
+  EXPECT_THROW(histogram_svg("q", {flat}), Error);
+}
+
+TEST(HistogramSvg, WritesTheFileAtomically) {
+  const test::TempDir dir("svg");
+  write_histogram_svg(dir / "quality.svg", "q", {quality_panel()});
+  std::ifstream in(dir / "quality.svg");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), histogram_svg("q", {quality_panel()}));
+  EXPECT_THROW(write_histogram_svg(dir / "missing" / "quality.svg", "q", {quality_panel()}), Error);
+}
+
+}  // namespace
+}  // namespace vorocrust
