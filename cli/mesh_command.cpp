@@ -87,6 +87,10 @@ int run_mesh(const MeshArgs& args) {
     write_or_remove(surface, "seeds.csv", [&](const auto& path) { write_seeds_csv(result->seeds, path); });
     write_or_remove(surface, "surface.obj", [&](const auto& path) { write_mesh(result->surface, path); });
     write_or_remove(surface, "surface.ply", [&](const auto& path) { write_mesh(result->surface, path); });
+    write_or_remove(surface, "quality.svg", [&](const auto& path) {
+      write_histogram_svg(path, "surface quality: " + (out / "surface.ply").string(),
+                          {surface_quality_panel(*result->surface_quality)});
+    });
     progress.finish();
     if (!args.quiet) {
       const RefinementStats& r = result->refinement;
@@ -96,6 +100,11 @@ int run_mesh(const MeshArgs& args) {
         std::fprintf(stderr, "vorocrust: %zu surface seeds, a surface of %zu triangles after %zu rounds of sliver "
                      "elimination\n", result->seeds.size(), result->surface.num_faces(),
                      result->slivers.iterations.size() - 1);
+        const SurfaceQuality& q = *result->surface_quality;
+        std::fprintf(stderr, "vorocrust: smallest angle %.1f deg, %.2f %% of angles below 30 deg, Q min %.3f, "
+                     "Hausdorff %.3f %% of the diagonal, topology %s\n", q.min_angle_degrees,
+                     q.percent_angles_below_30, q.min_quality, 100 * q.hausdorff_relative,
+                     q.topology_matches ? "as the input's" : "DIFFERS from the input's");
       }
     }
     if (args.stop_after.empty()) {

@@ -90,13 +90,8 @@ int run_quality(const QualityArgs& args) {
   const SurfaceMesh output = read_mesh(surface);
   const SurfaceQuality q = measure_surface_quality(input, output, args.options);
 
-  HistogramPanel panel;
-  panel.label = "triangle quality Q = 6S / (sqrt(3) h p) of the output surface";
-  panel.counts = q.quality_histogram;
-  panel.min = q.min_quality;
-  panel.mean = q.mean_quality;
   const fs::path svg = out / "quality.svg";
-  write_histogram_svg(svg, "surface quality: " + surface.string(), {panel});
+  write_histogram_svg(svg, "surface quality: " + surface.string(), {surface_quality_panel(q)});
 
   if (args.json) {
     std::printf("%s\n", surface_quality_json(q).c_str());

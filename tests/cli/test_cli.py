@@ -155,7 +155,8 @@ class Mesh(unittest.TestCase):
             self.assertEqual(report["input"]["faces"], 446)
             self.assertEqual([t["phase"] for t in report["timings"]][:2], ["reading", "validating"])
             self.assertEqual(sorted(os.listdir(out)),
-                             ["balls.csv", "balls.vtk", "report.json", "seeds.csv", "surface.obj", "surface.ply"])
+                             ["balls.csv", "balls.vtk", "quality.svg", "report.json", "seeds.csv", "surface.obj",
+                              "surface.ply"])
             self.assertEqual(report["features"]["corners"], 12)
             self.assertEqual(report["refinement"]["balls"]["corner"], 12)
             self.assertEqual(report["slivers"]["half_covered_left"], 0)
@@ -183,6 +184,10 @@ class Mesh(unittest.TestCase):
             self.assertEqual(len(rows), 2 * report["surface"]["triangles"])
             self.assertEqual({(rows[i]["label"], rows[i + 1]["label"]) for i in range(0, len(rows), 2)},
                              {("0", "1"), ("1", "0")})
+            quality = report["surface"]["quality"]
+            self.assertTrue(quality["topology"]["matches"])
+            self.assertLess(quality["hausdorff"]["percent_of_bounding_box_diagonal"], 1.0)
+            self.assertGreater(quality["triangle_quality"]["min"], 0.3)
             info = json.loads(run("info", "--json", os.path.join(out, "surface.ply")).stdout)
             self.assertEqual(info["faces"], report["surface"]["triangles"])
             self.assertEqual(info["genus"], 1)

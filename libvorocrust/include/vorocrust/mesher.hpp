@@ -8,11 +8,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "vorocrust/balls.hpp"
 #include "vorocrust/progress.hpp"
+#include "vorocrust/quality.hpp"
 #include "vorocrust/seeds.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
@@ -103,6 +105,9 @@ struct MeshResult {
   std::vector<Seed> seeds;
   SurfaceMesh surface;
   SliverStats slivers;
+  // The surface measured against the input as the paper's section 3 does (angles, triangle
+  // quality, two-sided Hausdorff distance, topology).
+  std::optional<SurfaceQuality> surface_quality;
 };
 
 // Runs the pipeline up to options.stop_after. The cells are not implemented yet: asking for them

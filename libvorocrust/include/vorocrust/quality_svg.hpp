@@ -22,6 +22,10 @@ struct HistogramPanel {
   double min = 0, mean = 0;         // of the values counted, marked on the axis
 };
 
+struct SurfaceQuality;
+// The triangle-quality panel of OUTDIR/quality.svg.
+HistogramPanel surface_quality_panel(const SurfaceQuality& quality);
+
 // The picture as text. Throws Error(Usage) for a panel without bins or with high <= low.
 std::string histogram_svg(const std::string& title, const std::vector<HistogramPanel>& panels);
 

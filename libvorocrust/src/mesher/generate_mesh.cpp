@@ -119,6 +119,8 @@ MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, c
   });
   result.seeds = std::move(seeds.seeds);
   result.surface = std::move(seeds.surface);
+  if (progress && !progress({"surface quality", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
+  result.surface_quality = clock("surface quality", [&] { return measure_surface_quality(input, result.surface); });
   if (options.stop_after == Stage::Surface) return result;
   throw Error(Error::Kind::NotImplemented,
               "not yet: interior seeds and Voronoi cells (paper 2.5) are not implemented in this version; "

@@ -9,6 +9,7 @@
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/quality_svg.hpp"
+#include "vorocrust/quality.hpp"
 
 namespace vorocrust {
 
@@ -150,6 +151,15 @@ std::string histogram_svg(const std::string& title, const std::vector<HistogramP
 void write_histogram_svg(const std::filesystem::path& path, const std::string& title,
                          const std::vector<HistogramPanel>& panels) {
   write_file_atomically(path, histogram_svg(title, panels));
+}
+
+HistogramPanel surface_quality_panel(const SurfaceQuality& quality) {
+  HistogramPanel panel;
+  panel.label = "triangle quality Q = 6S / (sqrt(3) h p) of the output surface";
+  panel.counts = quality.quality_histogram;
+  panel.min = quality.min_quality;
+  panel.mean = quality.mean_quality;
+  return panel;
 }
 
 }  // namespace vorocrust

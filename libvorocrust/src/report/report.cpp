@@ -185,6 +185,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                       {"vertices", m.surface.num_vertices()},
                       {"triangles", m.surface.num_faces()},
                       {"regions", m.surface.region_names}};
+    if (m.surface_quality) doc["surface"]["quality"] = quality_object(*m.surface_quality);
   }
   if (report.mesh && report.input && report.validation) {
     doc["input"] = info_object(report.inputs, *report.mesh, *report.input, *report.validation);

@@ -10,16 +10,6 @@ namespace vorocrust {
 
 namespace {
 
-geometry::BoxTree face_tree(const SurfaceMesh& surface) {
-  std::vector<geometry::Box> boxes(surface.num_faces());
-  std::vector<std::uint32_t> items(surface.num_faces());
-  for (std::uint32_t f = 0; f < items.size(); ++f) {
-    for (Index v : surface.triangles[f]) boxes[f].include(surface.vertices[v]);
-    items[f] = f;
-  }
-  return geometry::BoxTree(std::move(boxes), std::move(items));
-}
-
 // Relative margins below which a hit cannot tell the side: a barycentric coordinate this small
 // puts the hit on an edge, where the neighbouring face may be the one that counts.
 constexpr double kEdgeMargin = 1e-7;
@@ -27,7 +17,7 @@ constexpr double kGrazing = 1e-6;  // |cos| between ray and face normal
 
 }  // namespace
 
-RegionLocator::RegionLocator(const SurfaceMesh& surface) : surface_(surface), faces_(face_tree(surface)) {}
+RegionLocator::RegionLocator(const SurfaceMesh& surface) : surface_(surface), faces_(geometry::face_tree(surface)) {}
 
 std::int32_t RegionLocator::region_behind(Index face) const {
   return surface_.has_regions() ? surface_.face_regions[face].back : kInsideRegion;
