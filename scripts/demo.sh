@@ -9,11 +9,17 @@ echo
 echo "== build/cli/vorocrust info samples/cgal_joint.off"
 build/cli/vorocrust info samples/cgal_joint.off
 echo
-echo "== build/cli/vorocrust mesh samples/cgal_joint.off -o demo-output --stop-after balls"
-build/cli/vorocrust mesh samples/cgal_joint.off -o demo-output --stop-after balls
+echo "== build/cli/vorocrust mesh samples/cgal_joint.off -o demo-output --stop-after surface"
+build/cli/vorocrust mesh samples/cgal_joint.off -o demo-output --stop-after surface
 echo
 echo "== build/cli/vorocrust check-balls samples/cgal_joint.off demo-output/balls.csv"
 build/cli/vorocrust check-balls samples/cgal_joint.off demo-output/balls.csv
 echo
-echo "The protecting balls are in demo-output/: balls.csv, balls.vtk (open in ParaView and glyph the"
-echo "points as spheres scaled by 'radius'), and report.json (counts and the time of each phase)."
+echo
+echo "== build/cli/vorocrust quality demo-output"
+build/cli/vorocrust quality demo-output
+echo
+echo "The surface is in demo-output/surface.obj and surface.ply (ParaView, MeshLab), its quality"
+echo "histogram in demo-output/quality.svg, the seeds in seeds.csv; the protecting balls in balls.csv"
+echo "and balls.vtk (in ParaView glyph the points as spheres scaled by 'radius'); report.json holds"
+echo "the counts, the sliver rounds, the quality figures and the time of each phase."
