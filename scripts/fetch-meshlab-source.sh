@@ -7,8 +7,8 @@
 #
 # The download uses a temporary apt configuration of its own: a sources list holding one deb-src
 # entry (the mirror and suite the installed meshlab came from, as `apt-cache madison` reports
-# them), its own lists and cache folders. The system's apt sources, lists and cache are never
-# read for this or written. apt checks the files against the mirror's signed Release file.
+# them), its own lists and cache folders. The system's apt sources, lists and cache are left as
+# they are. apt checks the files against the mirror's signed Release file.
 # Needs the `meshlab` and `dpkg-dev` packages (scripts/install-deps.sh) and network access to a
 # Debian mirror; runs as any user. Idempotent: a DEST that already holds the source of the
 # installed version is kept, and nothing is downloaded. Prints the unpacked tree on stdout.
