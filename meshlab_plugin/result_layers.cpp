@@ -2,6 +2,8 @@
 
 #include "result_layers.hpp"
 
+#include <QFileInfo>
+
 namespace vorocrust::meshlab {
 
 namespace {
@@ -18,7 +20,10 @@ vcg::Color4b stratum_colour(StratumType type) {
 }  // namespace
 
 MeshModel* add_balls_layer(MeshDocument& md, const std::vector<Ball>& balls, const MeshModel& source) {
-  MeshModel* layer = md.addNewMesh("", source.label() + " VoroCrust balls", true);
+  // MeshLab's layer list shows a label as a file name without its extension, cutting it at its
+  // last dot: the name has none.
+  const QString name = QFileInfo(source.label()).completeBaseName().replace('.', '_') + " VoroCrust balls";
+  MeshModel* layer = md.addNewMesh("", name, true);
   try {
     layer->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
     CMeshO& cm = layer->cm;

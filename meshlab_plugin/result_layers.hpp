@@ -26,11 +26,13 @@ struct ResultLayers {
   // attributes. Each gets a field here and an add_..._layer beside add_balls_layer.
 };
 
-// Adds a point layer named "SOURCE VoroCrust balls" and makes it current: one vertex per ball
-// centre, in the library's order (balls.csv's rows), with the radius as the float attribute
-// "radius" and as vertex quality (so Colorize by vertex quality and the quality histogram work),
-// the stratum as "stratum_type" and "stratum_index", and a colour per stratum type (corners
-// red, creases yellow, patches grey-blue). It carries the source layer's transformation matrix.
+// Adds a point layer named "SOURCE VoroCrust balls" (SOURCE: the source layer's label without its
+// extension and with no dot, so "bunny.off" gives "bunny VoroCrust balls") and makes it current:
+// one vertex per ball centre, in the library's order (balls.csv's rows), with the radius as the
+// float attribute "radius" and as vertex quality (so Colorize by vertex quality and the quality
+// histogram work), the stratum as "stratum_type" and "stratum_index", and a colour per stratum
+// type (corners red, creases yellow, patches grey-blue). It carries the source layer's
+// transformation matrix.
 MeshModel* add_balls_layer(MeshDocument& md, const std::vector<Ball>& balls, const MeshModel& source);
 
 // Adds every layer a run up to `stage` yields. Today that is the balls layer; the surface and

@@ -114,7 +114,7 @@ TEST(LayersToSurface, RefusesNonFiniteCoordinatesAndLayersWithoutFaces) {
 
 TEST(ResultLayers, BallsBecomeAPointLayerWithTheirRadiiAndStrata) {
   MeshDocument md;
-  MeshModel* source = fan_of_three(md, "fan");
+  MeshModel* source = fan_of_three(md, "fan.v2.off");
   source->cm.Tr.SetTranslate(1, 2, 3);
   const std::vector<vorocrust::Ball> balls{
       {{0, 0, 0}, 0.5, vorocrust::StratumType::Corner, 0},
@@ -122,7 +122,7 @@ TEST(ResultLayers, BallsBecomeAPointLayerWithTheirRadiiAndStrata) {
       {{0.2, 0.2, 0}, 0.125, vorocrust::StratumType::Patch, 7}};
   MeshModel* layer = vorocrust::meshlab::add_balls_layer(md, balls, *source);
   EXPECT_EQ(md.mm(), layer);
-  EXPECT_EQ(layer->label(), "fan VoroCrust balls");
+  EXPECT_EQ(layer->label(), "fan_v2 VoroCrust balls");
   EXPECT_EQ(md.size(), 2);
   const CMeshO& cm = layer->cm;
   ASSERT_EQ(cm.vn, 3);
