@@ -13,6 +13,10 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   # tests and benchmarks (the CLI tests run under Debian's own python3)
   libgtest-dev libgmock-dev libbenchmark-dev python3
+  # the MeshLab plugin: MeshLab itself, what its headers need (Qt5, GLEW), dpkg-dev for the
+  # `apt-get source` of scripts/fetch-meshlab-source.sh, and for meshlabserver's tests a virtual
+  # X server with Mesa's software OpenGL
+  meshlab qtbase5-dev libqt5opengl5-dev libglew-dev dpkg-dev xvfb xauth libgl1-mesa-dri
 )
 
 missing=()

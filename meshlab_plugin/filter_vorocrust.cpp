@@ -1,0 +1,297 @@
+#include "filter_vorocrust.hpp"
+
+#include <QDir>
+#include <QFileInfo>
+
+#include <exception>
+#include <filesystem>
+#include <new>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "layers_to_surface.hpp"
+#include "progress_bridge.hpp"
+#include "result_layers.hpp"
+#include "vorocrust/vorocrust.hpp"
+
+using vorocrust::Error;
+
+namespace {
+
+// Parameter names: the keys of MeshLab filter scripts (.mlx), so they stay as they are.
+const char* const kLipschitz = "lipschitz";
+const char* const kSharpAngle = "sharpAngle";
+const char* const kMaxSize = "maxSize";
+const char* const kSeed = "seed";
+const char* const kInterior = "interior";
+const char* const kOutputFolder = "outputFolder";
+const char* const kWriteVtu = "writeVtu";
+const char* const kWriteOpenFoam = "writeOpenFoam";
+const char* const kWriteSeeds = "writeSeeds";
+const char* const kWriteSurface = "writeSurface";
+const char* const kAllVisibleLayers = "allVisibleLayers";
+
+// How the interior of the volume is seeded (paper 2.5). The library does not take it yet: it
+// is read, checked and logged, and goes into MeshOptions when the interior stage lands.
+enum class InteriorMode { Random, Lattice, Cvt };
+const QStringList kInteriorModes{"random", "lattice", "cvt"};
+
+// The files the Voronoi Mesh filter writes into its output folder.
+struct OutputRequest {
+  std::filesystem::path folder;
+  bool vtu = true;       // mesh.vtu: polyhedral cells for ParaView
+  bool openfoam = true;  // case/: an OpenFOAM case
+  bool seeds = true;     // seeds.csv: the seeds, from which the whole mesh can be rebuilt
+  bool surface = true;   // surface.obj and surface.ply: the conforming surface
+};
+
+struct VoronoiRequest {
+  vorocrust::MeshOptions options;
+  InteriorMode interior = InteriorMode::Random;
+  OutputRequest output;
+  bool all_visible_layers = false;
+};
+
+void add_refinement_parameters(const MeshModel* m, RichParameterList& parameters) {
+  const vorocrust::MeshOptions defaults;
+  parameters.addParam(RichFloat(kLipschitz, float(defaults.lipschitz), "Lipschitz constant L",
+                                "How fast ball radii may vary, strictly between 0 and 1: a smaller L gives more, "
+                                "more evenly sized balls (VoroCrust paper, section 2.1)."));
+  parameters.addParam(RichFloat(kSharpAngle, float(defaults.sharp_angle_degrees), "Sharp angle (degrees)",
+                                "An edge whose two faces' normals differ by more than this angle is a sharp crease, "
+                                "kept exactly. 30 keeps the creases of CAD models; 60 suits smooth, coarsely "
+                                "tessellated scans."));
+  const float diagonal = m == nullptr || m->cm.bbox.IsNull() ? 0.0f : float(m->cm.bbox.Diag());
+  parameters.addParam(RichAbsPerc(kMaxSize, 0.0f, 0.0f, diagonal, "Maximum size",
+                                  "A uniform bound on ball radii (and cell sizes); 0 sets no bound."));
+  parameters.addParam(RichInt(kSeed, 0, "Random seed",
+                              "Equal input, parameters and seed give equal output, as with the vorocrust "
+                              "program's --seed."));
+}
+
+// The library's options from the filter's parameters; throws Error(Usage) for a value out of range.
+vorocrust::MeshOptions mesh_options(const RichParameterList& parameters, vorocrust::Stage stage) {
+  vorocrust::MeshOptions options;
+  options.lipschitz = parameters.getFloat(kLipschitz);
+  options.sharp_angle_degrees = parameters.getFloat(kSharpAngle);
+  const float max_size = parameters.getAbsPerc(kMaxSize);
+  if (max_size < 0) throw Error(Error::Kind::Usage, "the maximum size must be 0 (no bound) or positive");
+  if (max_size > 0) options.max_size = max_size;
+  const int seed = parameters.getInt(kSeed);
+  if (seed < 0) throw Error(Error::Kind::Usage, "the random seed must be 0 or positive");
+  options.seed = static_cast<std::uint64_t>(seed);
+  options.stop_after = stage;
+  options.check();
+  return options;
+}
+
+VoronoiRequest voronoi_request(const RichParameterList& parameters) {
+  VoronoiRequest request;
+  request.options = mesh_options(parameters, vorocrust::Stage::Cells);
+  const int interior = parameters.getEnum(kInterior);
+  if (interior < 0 || interior >= kInteriorModes.size()) {
+    throw Error(Error::Kind::Usage, "unknown interior mode " + std::to_string(interior));
+  }
+  request.interior = static_cast<InteriorMode>(interior);
+  const QString folder = parameters.getString(kOutputFolder).trimmed();
+  if (folder.isEmpty()) throw Error(Error::Kind::Usage, "no output folder given");
+  request.output.folder = folder.toStdString();
+  request.output.vtu = parameters.getBool(kWriteVtu);
+  request.output.openfoam = parameters.getBool(kWriteOpenFoam);
+  request.output.seeds = parameters.getBool(kWriteSeeds);
+  request.output.surface = parameters.getBool(kWriteSurface);
+  request.all_visible_layers = parameters.getBool(kAllVisibleLayers);
+  return request;
+}
+
+// The default output folder: "NAME_vorocrust" beside the layer's file, or in the home folder.
+QString default_output_folder(const MeshModel* m) {
+  if (m == nullptr || m->fullName().isEmpty()) return QDir::home().filePath("mesh_vorocrust");
+  const QFileInfo file(m->fullName());
+  return file.absoluteDir().filePath(file.completeBaseName() + "_vorocrust");
+}
+
+// Validates the surface as the vorocrust program does before meshing: orientation problems are
+// fixed in the copy (the layers stay as they are), warnings are logged, and error findings
+// (zero-area or duplicate faces, self-intersections) stop the filter with their messages.
+template <class Logger>
+void check_input(vorocrust::SurfaceMesh& surface, Logger&& log) {
+  const vorocrust::ValidationReport report = vorocrust::validate(surface);
+  std::string errors;
+  for (const vorocrust::Finding& f : report.findings) {
+    if (f.severity == vorocrust::Finding::Severity::Error) {
+      errors += "\n" + f.message;
+    } else if (f.severity != vorocrust::Finding::Severity::Note) {
+      log(std::string(to_string(f.severity)) + ": " + f.message);
+    }
+  }
+  if (!errors.empty()) {
+    throw Error(Error::Kind::InvalidGeometry, "the input surface cannot be meshed:" + errors);
+  }
+}
+
+std::string describe(const vorocrust::MeshResult& result) {
+  const vorocrust::RefinementStats& r = result.refinement;
+  return std::to_string(result.balls.size()) + " balls (" + std::to_string(r.balls[0]) + " corner, " +
+         std::to_string(r.balls[1]) + " crease, " + std::to_string(r.balls[2]) + " patch); " +
+         std::to_string(result.features.corners) + " corners, " + std::to_string(result.features.creases) +
+         " creases, " + std::to_string(result.features.patches) + " patches";
+}
+
+}  // namespace
+
+FilterVoroCrustPlugin::FilterVoroCrustPlugin() {
+  typeList << FP_PROTECTING_BALLS << FP_VORONOI_MESH;
+  for (FilterIDType id : types()) actionList << new QAction(filterName(id), this);
+}
+
+QString FilterVoroCrustPlugin::pluginName() const { return "FilterVoroCrust"; }
+
+QString FilterVoroCrustPlugin::filterName(FilterIDType filter) const {
+  switch (filter) {
+    case FP_PROTECTING_BALLS: return "VoroCrust Protecting Balls";
+    case FP_VORONOI_MESH: return "VoroCrust Voronoi Mesh";
+  }
+  return {};
+}
+
+QString FilterVoroCrustPlugin::filterInfo(FilterIDType filter) const {
+  const QString paper =
+      "<br><br>See: <i>A. Abdelkader, C. L. Bajaj, M. S. Ebeida, A. H. Mahmoud, S. A. Mitchell, J. D. Owens, "
+      "A. A. Rushdi</i>, <b>\"VoroCrust: Voronoi Meshing Without Clipping\"</b>, ACM Transactions on Graphics.";
+  switch (filter) {
+    case FP_PROTECTING_BALLS:
+      return "Covers the current mesh with the protecting balls of VoroCrust's refinement (paper section 2.3): "
+             "balls centred on the surface, on its sharp corners, creases and smooth patches. Adds a point "
+             "layer with one vertex per ball centre: the radius is the per-vertex attribute <i>radius</i> and "
+             "the vertex quality, the stratum is in <i>stratum_type</i> (0 corner, 1 crease, 2 patch) and "
+             "<i>stratum_index</i>, and the colour shows the stratum type. The mesh is validated first: "
+             "zero-area or duplicate faces and self-intersections stop the filter." +
+             paper;
+    case FP_VORONOI_MESH:
+      return "Meshes the volume the current mesh bounds (or the volumes of all visible layers, each a "
+             "material) into conforming Voronoi cells with VoroCrust: true Voronoi cells, convex, that "
+             "conform to the surface without clipping. Writes the volume mesh into the output folder "
+             "(mesh.vtu for ParaView, an OpenFOAM case, seeds.csv, the conforming surface) and adds layers "
+             "for the conforming surface and the seeds.<br><br>The library does not make seeds and cells yet: "
+             "until it does, this filter stops with its \"not yet\" message (the protecting balls are "
+             "available through <i>VoroCrust Protecting Balls</i>)." +
+             paper;
+  }
+  return {};
+}
+
+MeshFilterInterface::FilterClass FilterVoroCrustPlugin::getClass(QAction*) { return Remeshing; }
+
+MeshFilterInterface::FILTER_ARITY FilterVoroCrustPlugin::filterArity(QAction* action) const {
+  return ID(action) == FP_VORONOI_MESH ? VARIABLE : SINGLE_MESH;
+}
+
+int FilterVoroCrustPlugin::getPreConditions(QAction*) const { return MeshModel::MM_FACENUMBER; }
+
+// Both filters add layers and leave the input layers as they are.
+int FilterVoroCrustPlugin::postCondition(QAction*) const { return MeshModel::MM_NONE; }
+
+void FilterVoroCrustPlugin::initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parameters) {
+  const MeshModel* m = md.mm();
+  add_refinement_parameters(m, parameters);
+  if (ID(action) != FP_VORONOI_MESH) return;
+  parameters.addParam(RichEnum(kInterior, 0, kInteriorModes, "Interior seeds",
+                               "random: dart throwing with the Lipschitz sizing; lattice: a cubic lattice of the "
+                               "local size, giving hex-dominant cells; cvt: Lloyd iterations towards centroidal "
+                               "cells. (Passed on when the library's interior stage lands.)"));
+  parameters.addParam(RichString(kOutputFolder, default_output_folder(m), "Output folder",
+                                 "Where the volume mesh files are written; made when missing."));
+  parameters.addParam(RichBool(kWriteVtu, true, "Write mesh.vtu", "A VTK unstructured grid of polyhedral cells."));
+  parameters.addParam(
+      RichBool(kWriteOpenFoam, true, "Write an OpenFOAM case", "case/ with constant/polyMesh, ready for checkMesh."));
+  parameters.addParam(
+      RichBool(kWriteSeeds, true, "Write seeds.csv", "The seeds with label and radius: they define the whole mesh."));
+  parameters.addParam(
+      RichBool(kWriteSurface, true, "Write the surface", "surface.obj and surface.ply, the conforming surface."));
+  parameters.addParam(RichBool(kAllVisibleLayers, false, "All visible layers as materials",
+                               "Mesh the surfaces of all visible layers together, each layer a material; "
+                               "otherwise the current layer alone."));
+}
+
+bool FilterVoroCrustPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& parameters,
+                                        vcg::CallBackPos* cb) {
+  errorMessage.clear();
+  try {
+    if (md.mm() == nullptr) throw Error(Error::Kind::Usage, "there is no current layer");
+    switch (ID(action)) {
+      case FP_PROTECTING_BALLS: protecting_balls(md, parameters, cb); return true;
+      case FP_VORONOI_MESH: voronoi_mesh(md, parameters, cb); return true;
+    }
+    return fail("VoroCrust: unknown filter");
+  } catch (const Error& e) {
+    return fail(QString("VoroCrust: %1: %2").arg(to_string(e.kind()), QString::fromStdString(e.what())));
+  } catch (const std::bad_alloc&) {
+    return fail("VoroCrust: out of memory");
+  } catch (const std::exception& e) {
+    return fail(QString("VoroCrust: internal error: %1").arg(QString::fromStdString(e.what())));
+  } catch (...) {
+    return fail("VoroCrust: internal error: an unknown exception");
+  }
+}
+
+bool FilterVoroCrustPlugin::fail(const QString& message) {
+  errorMessage = message.toHtmlEscaped().replace("\n", "<br>");
+  // meshlabserver prints the log, not errorMessage: say it there too.
+  Log(GLLogStream::WARNING, qUtf8Printable(message));
+  return false;
+}
+
+void FilterVoroCrustPlugin::protecting_balls(MeshDocument& md, const RichParameterList& parameters,
+                                             vcg::CallBackPos* cb) {
+  const vorocrust::MeshOptions options = mesh_options(parameters, vorocrust::Stage::Balls);
+  MeshModel& source = *md.mm();
+  vorocrust::SurfaceMesh surface = vorocrust::meshlab::surface_from_layers({&source});
+  check_input(surface, [this](const std::string& line) { Log("VoroCrust: %s", line.c_str()); });
+  const vorocrust::MeshResult result =
+      vorocrust::generate_mesh(surface, options, vorocrust::meshlab::progress_to(cb));
+  MeshModel* layer = vorocrust::meshlab::add_balls_layer(md, result.balls, source);
+  Log("VoroCrust: %s, in layer \"%s\"", describe(result).c_str(), qUtf8Printable(layer->label()));
+}
+
+void FilterVoroCrustPlugin::voronoi_mesh(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb) {
+  const VoronoiRequest request = voronoi_request(parameters);
+  MeshModel& current = *md.mm();
+  std::vector<const MeshModel*> layers;
+  if (request.all_visible_layers) {
+    for (const MeshModel* layer : md.meshList) {
+      if (!layer->visible) continue;
+      if (layer->cm.fn == 0) {
+        Log("VoroCrust: layer \"%s\" has no faces and is left out", qUtf8Printable(layer->label()));
+        continue;
+      }
+      layers.push_back(layer);
+    }
+    if (layers.empty()) throw Error(Error::Kind::InvalidGeometry, "no visible layer has faces");
+  } else {
+    layers.push_back(&current);
+  }
+  Log("VoroCrust: %zu layer(s), interior seeds: %s", layers.size(),
+      qUtf8Printable(kInteriorModes[static_cast<int>(request.interior)]));
+
+  vorocrust::SurfaceMesh surface = vorocrust::meshlab::surface_from_layers(layers);
+  check_input(surface, [this](const std::string& line) { Log("VoroCrust: %s", line.c_str()); });
+  std::error_code ec;
+  std::filesystem::create_directories(request.output.folder, ec);
+  if (ec || !std::filesystem::is_directory(request.output.folder)) {
+    throw Error(Error::Kind::Output, "cannot make the output folder: " + (ec ? ec.message() : "not a folder"),
+                {.file = request.output.folder.string()});
+  }
+
+  const vorocrust::MeshResult result =
+      vorocrust::generate_mesh(surface, request.options, vorocrust::meshlab::progress_to(cb));
+
+  // The files. The library writes the balls today; mesh.vtu, case/, seeds.csv and surface.* are
+  // written here, each when its flag in request.output is set, once the library's writers exist.
+  vorocrust::write_balls_csv(result.balls, request.output.folder / "balls.csv");
+  vorocrust::write_balls_vtk(result.balls, request.output.folder / "balls.vtk");
+
+  vorocrust::meshlab::add_result_layers(md, result, vorocrust::Stage::Cells, current);
+  Log("VoroCrust: %s; files in %s", describe(result).c_str(), request.output.folder.string().c_str());
+}
