@@ -243,7 +243,7 @@ class MeshLabCase(unittest.TestCase):
                      sharpAngle=30.0, maxSize=("abs", 0.0), seed=SEED, interior=("enum", 0), outputFolder=folder,
                      writeVtu=True, writeOpenFoam=True, writeSeeds=True, writeSurface=True, allVisibleLayers=False)
         output = self.assert_fails_with(os.path.join(ARGS.models, "cgal_joint.off"), mlx,
-                                        "VoroCrust: not yet implemented:", "surface seeds and cells")
+                                        "VoroCrust: not yet implemented:", "Voronoi cells")
         self.assertIn("interior seeds: random", output)
 
 
