@@ -265,8 +265,8 @@ void BallRefinement::Impl::check_violations(const Subface& s, const std::vector<
 
 // A subface leaves the pool once it is covered: by balls of a lower type (whose inside is kept
 // from higher phases) or deeply by balls of its own type, every ball co-smooth with it. One ball
-// is tried first; then the union (all balls along a segment, pairs over a triangle), which spares
-// splitting the fringe where two balls meet down to pieces that fit in one.
+// is tried first; then their union, which spares splitting the fringe where balls meet down to
+// pieces that fit in one.
 bool BallRefinement::Impl::discard(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates) {
   const Point centroid = s.centroid();
   const auto covering = [&] {
@@ -288,12 +288,7 @@ bool BallRefinement::Impl::discard(StratumType type, const Subface& s, const std
       if (all) return true;
     }
     if (s.is_segment()) return segment_covered(s.corner(0), s.corner(1), cover);
-    for (std::size_t i = 0; i < cover.size(); ++i) {
-      for (std::size_t j = i + 1; j < cover.size(); ++j) {
-        if (triangle_covered_by_two(s.corner(0), s.corner(1), s.corner(2), cover[i], cover[j])) return true;
-      }
-    }
-    return false;
+    return triangle_covered(s.corner(0), s.corner(1), s.corner(2), cover);
   };
   if (!covered_by(covering())) return false;
   check_violations(s, candidates);

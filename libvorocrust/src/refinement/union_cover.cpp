@@ -31,61 +31,96 @@ bool segment_covered(const Point& a, const Point& b, const std::vector<CoverBall
 
 namespace {
 
-bool inside(const Point& p, const CoverBall& ball) { return (p - ball.centre).squaredNorm() <= ball.radius * ball.radius; }
+// A ball's section by the plane of a triangle.
+struct Disc {
+  Point centre;  // in the plane
+  double radius2;
+};
 
-// Points where segment pq crosses the sphere of `ball`.
-void crossings(const Point& p, const Point& q, const CoverBall& ball, std::vector<Point>& out) {
-  const Point d = q - p, f = p - ball.centre;
+// Points where segment pq (in the disc's plane) crosses the disc's circle. Crossings a rounding
+// error beyond an end still count: an extra point only makes the cover test stricter.
+void crossings(const Point& p, const Point& q, const Disc& disc, std::vector<Point>& out) {
+  const Point d = q - p, f = p - disc.centre;
   const double a = d.squaredNorm();
   if (a == 0) return;
-  const double half_b = f.dot(d) / a, c = (f.squaredNorm() - ball.radius * ball.radius) / a;
-  const double disc = half_b * half_b - c;
-  if (disc < 0) return;
-  const double root = std::sqrt(disc);
+  const double half_b = f.dot(d) / a, c = (f.squaredNorm() - disc.radius2) / a;
+  const double discriminant = half_b * half_b - c;
+  if (discriminant < 0) return;
+  const double root = std::sqrt(discriminant);
   for (double t : {-half_b - root, -half_b + root}) {
-    if (t >= 0 && t <= 1) out.push_back(p + t * d);
+    if (t >= -1e-9 && t <= 1 + 1e-9) out.push_back(p + t * d);
   }
 }
 
-bool in_triangle(const Point& p, const Point& a, const Point& b, const Point& c, const Point& normal) {
-  return (b - a).cross(p - a).dot(normal) >= 0 && (c - b).cross(p - b).dot(normal) >= 0 &&
-         (a - c).cross(p - c).dot(normal) >= 0;
+// Points where two circles of one plane (with normal `normal`) cross.
+void circle_crossings(const Disc& first, const Disc& second, const Point& normal, std::vector<Point>& out) {
+  const Point offset = second.centre - first.centre;
+  const double d2 = offset.squaredNorm();
+  if (d2 == 0) return;
+  const double along = (d2 + first.radius2 - second.radius2) / (2 * d2);  // in units of the offset
+  const double across2 = first.radius2 / d2 - along * along;
+  if (across2 < 0) return;
+  const Point middle = first.centre + along * offset;
+  const Point side = std::sqrt(across2) * normal.cross(offset) / normal.norm();
+  out.push_back(middle + side);
+  out.push_back(middle - side);
+}
+
+// Whether p (in the triangle's plane) lies in the triangle or a rounding error outside it.
+bool near_triangle(const Point& p, const Point& a, const Point& b, const Point& c, const Point& normal) {
+  const double slack = -1e-9 * normal.squaredNorm();
+  return (b - a).cross(p - a).dot(normal) >= slack && (c - b).cross(p - b).dot(normal) >= slack &&
+         (a - c).cross(p - c).dot(normal) >= slack;
 }
 
 }  // namespace
 
-// T is covered by D1 u D2 (Di the balls cut by T's plane) exactly when T \ D1 lies in D2. The
-// distance to the second centre is convex, so its maximum over the closure of T \ D1 is taken at
-// an extreme point of that set: a corner of T outside D1, a point where an edge of T crosses the
-// first circle, or the point of the first circle farthest from the second centre, when in T.
-bool triangle_covered_by_two(const Point& a, const Point& b, const Point& c, const CoverBall& first,
-                             const CoverBall& second) {
+// The balls cut T's plane in discs. If some point of T lay in no disc, the lowest point of the
+// uncovered set's closure under a generic linear function would be a corner of T, a point where
+// an edge of T crosses a circle, or a point where two circles cross: it cannot lie on one circle
+// alone or inside an edge, where the function still decreases along the boundary. None of those
+// points lies inside any disc. So T is covered when each such point that is in T lies strictly
+// inside a disc — one other than the discs it lies on, which holds it only on its boundary.
+// (Rounding may put such a point a hair inside its own circle: the discs it lies on are skipped.)
+bool triangle_covered(const Point& a, const Point& b, const Point& c, const std::vector<CoverBall>& balls) {
   const Point normal = (b - a).cross(c - a);
   const double n2 = normal.squaredNorm();
   if (n2 == 0) return false;
-  std::vector<Point> extreme;
-  for (const Point* corner : {&a, &b, &c}) {
-    if (!inside(*corner, first)) extreme.push_back(*corner);
+  std::vector<Disc> discs;
+  for (const CoverBall& ball : balls) {
+    const double h = (ball.centre - a).dot(normal) / n2;
+    const double rho2 = ball.radius * ball.radius - h * h * n2;
+    if (rho2 > 0) discs.push_back({Point(ball.centre - h * normal), rho2});
   }
-  if (extreme.empty()) return true;  // T lies in the first ball
-  crossings(a, b, first, extreme);
-  crossings(b, c, first, extreme);
-  crossings(c, a, first, extreme);
-  // The first circle: centre and radius of the sphere's section by T's plane.
-  const double h = (first.centre - a).dot(normal) / n2;
-  const Point centre = first.centre - h * normal;
-  const double rho2 = first.radius * first.radius - h * h * n2;
-  if (rho2 > 0) {
-    const Point second_in_plane = second.centre - ((second.centre - a).dot(normal) / n2) * normal;
-    Point away = centre - second_in_plane;
-    if (away.squaredNorm() > 0) {
-      const Point far = centre + std::sqrt(rho2) * away.normalized();
-      if (in_triangle(far, a, b, c, normal)) extreme.push_back(far);
+  const auto inside_another = [&](const Point& p, std::size_t skip1, std::size_t skip2) {
+    for (std::size_t k = 0; k < discs.size(); ++k) {
+      if (k != skip1 && k != skip2 && (p - discs[k].centre).squaredNorm() < discs[k].radius2) return true;
+    }
+    return false;
+  };
+  constexpr std::size_t kNone = ~std::size_t{0};
+  const Point* corners[3] = {&a, &b, &c};
+  for (const Point* corner : corners) {
+    if (!inside_another(*corner, kNone, kNone)) return false;
+  }
+  std::vector<Point> points;
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    for (int e = 0; e < 3; ++e) {
+      points.clear();
+      crossings(*corners[e], *corners[(e + 1) % 3], discs[i], points);
+      for (const Point& p : points) {
+        if (!inside_another(p, i, kNone)) return false;
+      }
     }
   }
-  const double limit = second.radius * second.radius;
-  for (const Point& p : extreme) {
-    if ((p - second.centre).squaredNorm() > limit) return false;
+  for (std::size_t i = 0; i < discs.size(); ++i) {
+    for (std::size_t j = i + 1; j < discs.size(); ++j) {
+      points.clear();
+      circle_crossings(discs[i], discs[j], normal, points);
+      for (const Point& p : points) {
+        if (near_triangle(p, a, b, c, normal) && !inside_another(p, i, j)) return false;
+      }
+    }
   }
   return true;
 }

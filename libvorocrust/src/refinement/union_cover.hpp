@@ -1,7 +1,7 @@
 // Internal: is a subface covered by the union of a few balls? Maximal Poisson-disk sampling
 // drops a piece once it is covered; testing one ball at a time leaves a fringe of pieces that
-// straddle two balls and must be split until each fits in one. These tests are exact (up to
-// rounding) for a segment against any number of balls and a triangle against two balls.
+// straddle two or three balls and must be split until each fits in fewer. Both tests are exact
+// up to rounding, for any number of balls.
 #pragma once
 
 #include <vector>
@@ -18,8 +18,7 @@ struct CoverBall {
 // Whether every point of segment [a, b] lies in some ball.
 bool segment_covered(const Point& a, const Point& b, const std::vector<CoverBall>& balls);
 
-// Whether every point of triangle abc lies in the first or the second ball.
-bool triangle_covered_by_two(const Point& a, const Point& b, const Point& c, const CoverBall& first,
-                             const CoverBall& second);
+// Whether every point of triangle abc lies in some ball.
+bool triangle_covered(const Point& a, const Point& b, const Point& c, const std::vector<CoverBall>& balls);
 
 }  // namespace vorocrust
