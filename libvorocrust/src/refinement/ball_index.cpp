@@ -132,4 +132,17 @@ void BallIndex::reaching(StratumType type, const Point& p, double margin, std::v
   }
 }
 
+void BallIndex::lipschitz_violators(StratumType type, const Point& p, double radius, double L,
+                                    std::vector<std::uint32_t>& out) const {
+  // A ball of class k (radius below 2^k) can violate C3 only within (2^k - radius) / L of p.
+  std::vector<std::uint32_t> near;
+  for (const auto& [k, tree] : trees_->classes[static_cast<int>(type)]) {
+    near.clear();
+    tree.within(p, (std::ldexp(1.0, k) - radius) / L, near);
+    for (std::uint32_t b : near) {
+      if (balls_[b].radius > radius + L * (balls_[b].site.position - p).norm()) out.push_back(b);
+    }
+  }
+}
+
 }  // namespace vorocrust

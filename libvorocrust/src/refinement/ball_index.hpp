@@ -33,6 +33,9 @@ class BallIndex {
   // Balls of `type` that reach within `margin` of `p` (|p - centre| < radius + margin); with
   // margin 0, the balls containing p (A.4).
   void reaching(StratumType type, const Point& p, double margin, std::vector<std::uint32_t>& out) const;
+  // Balls of `type` too large beside a ball (p, radius) for C3: r_q > radius + L |p - q|.
+  void lipschitz_violators(StratumType type, const Point& p, double radius, double L,
+                           std::vector<std::uint32_t>& out) const;
 
  private:
   // Paper A.3/A.4 bound neighbourhoods through the Lipschitz condition, which holds only after it

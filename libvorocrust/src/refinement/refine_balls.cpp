@@ -90,6 +90,7 @@ class BallRefinement::Impl {
   bool try_dart(StratumType type, const SurfaceSite& site);
   bool covered(StratumType type, const SurfaceSite& site);
   double initial_radius(const SurfaceSite& site);
+  void shrink_neighbours_for_lipschitz(std::uint32_t ball);
   // Balls of every type that reach the subface; a child's are among its parent's.
   void reaching(const Subface& s, std::vector<std::uint32_t>& out) const;
   bool discard(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates);
@@ -184,15 +185,35 @@ void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, std::size_t
   mark_dirty(b.site.position, old_radius, b.site.type);
 }
 
+// The paper bounds r_p by the ball nearest to p alone (r_q + L |p - q|); taking every ball of the
+// type that could lower the bound (those within r_p / L) leaves no C3 violation by the new ball.
 double BallRefinement::Impl::initial_radius(const SurfaceSite& site) {
+  const double L = options_.lipschitz;
   double r = sizing_(site.position);
-  const std::int64_t q = balls_.nearest(site.type, site.position);
-  if (q >= 0) {
-    const RefinedBall& near = balls_[static_cast<std::uint32_t>(q)];
-    r = std::min(r, near.radius + options_.lipschitz * (near.site.position - site.position).norm());
+  const std::int64_t nearest = balls_.nearest(site.type, site.position);
+  if (nearest >= 0) {
+    const RefinedBall& near = balls_[static_cast<std::uint32_t>(nearest)];
+    r = std::min(r, near.radius + L * (near.site.position - site.position).norm());
+    scratch_.clear();
+    balls_.centres_within(site.type, site.position, r / L, scratch_);
+    for (std::uint32_t q : scratch_) r = std::min(r, balls_[q].radius + L * (balls_[q].site.position - site.position).norm());
   }
   // q* matters only where 0.49 |p - q*| would undercut the other bounds.
   return std::min(r, kSeparation * boundary_.distance_to_non_cosmooth(site, cosmooth_, r / kSeparation));
+}
+
+// C3 the other way round: a small new ball (near a feature, where q* is close) makes larger
+// neighbours violate r_q <= r_p + L |p - q|. Shrinking them now, rather than when the phase ends,
+// spares the pieces they would have let go and a whole pass to cover what they give up. One
+// pass suffices: r_p + L |p - q| is L-Lipschitz in q.
+void BallRefinement::Impl::shrink_neighbours_for_lipschitz(std::uint32_t ball) {
+  const RefinedBall& p = balls_[ball];
+  const double L = options_.lipschitz;
+  scratch_.clear();
+  balls_.lipschitz_violators(p.site.type, p.site.position, p.radius, L, scratch_);
+  for (std::uint32_t q : scratch_) {
+    shrink(q, p.radius + L * (balls_[q].site.position - p.site.position).norm(), stats_.c3_shrinks);
+  }
 }
 
 // Paper 2.3: a dart lands where no ball covers it (covering_radius). A
@@ -232,7 +253,7 @@ bool BallRefinement::Impl::try_dart(StratumType type, const SurfaceSite& site) {
     for (std::uint32_t b : scratch_) r = std::min(r, (balls_[b].site.position - site.position).norm() / kDeep);
   }
   if (!(r > min_radius_)) return false;
-  balls_.add(site, r);
+  shrink_neighbours_for_lipschitz(balls_.add(site, r));
   return true;
 }
 
