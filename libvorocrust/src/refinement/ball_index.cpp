@@ -3,146 +3,172 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-
-#include "refinement/point_cloud.hpp"
+#include <limits>
 
 namespace vorocrust {
 
-namespace {
-
-using Adaptor = PointCloudAdaptor<Point, IdentityPosition>;
-using Tree = DynamicKdTree<Adaptor>;
-
-// Appends the balls whose centres lie within the search radius and which reach the query point
-// (|p - centre| < radius + margin), straight from the tree's leaves.
-class ReachingBalls {
+// A k-d tree of balls that grows one ball at a time: a new ball descends to its leaf, and a full
+// leaf splits between the middle centres along their widest spread. Darts land uniformly at
+// random, so balls arrive in random order and the tree stays balanced without rebuilding, as a
+// binary search tree does under random insertions.
+//
+// Each node knows the box of the centres below it and the largest radius below it, which bounds
+// every query at any time. (The paper bounds neighbourhoods through the Lipschitz radii, which
+// hold only once C3 is enforced.) Shrinking leaves that radius stale, never too small.
+class BallIndex::Tree {
  public:
-  using DistanceType = double;
-  using IndexType = std::uint32_t;
-  ReachingBalls(double search_radius, double margin, const std::vector<std::uint32_t>& ball_of,
-                const std::vector<RefinedBall>& balls, std::vector<std::uint32_t>& out)
-      : r2_(search_radius * search_radius), margin_(margin), ball_of_(ball_of), balls_(balls), out_(out) {}
-  bool full() const { return true; }
-  double worstDist() const { return r2_; }
-  bool addPoint(double squared_distance, std::uint32_t local) {
-    const std::uint32_t b = ball_of_[local];
-    const double reach = balls_[b].radius + margin_;
-    if (squared_distance < reach * reach) out_.push_back(b);
-    return true;
+  void insert(const Point& centre, double radius, std::uint32_t ball);
+  void shrink(std::uint32_t ball, double radius) {
+    const auto [leaf, position] = slot_[ball];
+    leaves_[leaf][position].radius = radius;
+  }
+
+  struct Sphere {
+    Point centre;
+    double radius;
+    std::uint32_t ball;
+  };
+  // Calls visit(sphere) for every sphere in the subtrees that keep(squared distance from p to
+  // the subtree's box of centres, largest radius in it) accepts; nearer subtrees first.
+  template <class Keep, class Visit>
+  void search(const Point& p, Keep&& keep, Visit&& visit) const {
+    if (!nodes_.empty()) search(0, p, keep, visit);
   }
 
  private:
-  double r2_, margin_;
-  const std::vector<std::uint32_t>& ball_of_;
-  const std::vector<RefinedBall>& balls_;
-  std::vector<std::uint32_t>& out_;
+  static constexpr std::size_t kLeafSize = 8;
+  struct Node {
+    Point lo = Point::Constant(std::numeric_limits<double>::infinity());
+    Point hi = Point::Constant(-std::numeric_limits<double>::infinity());
+    double max_radius = 0;
+    int axis = -1;  // -1 for a leaf
+    double split = 0;
+    std::uint32_t child = 0;  // inner node: its children are child and child + 1; leaf: its index in leaves_
+    void include(const Point& centre, double radius) {
+      lo = lo.cwiseMin(centre);
+      hi = hi.cwiseMax(centre);
+      max_radius = std::max(max_radius, radius);
+    }
+  };
+
+  template <class Keep, class Visit>
+  void search(std::uint32_t index, const Point& p, Keep& keep, Visit& visit) const {
+    const Node& node = nodes_[index];
+    if (!keep((p - p.cwiseMax(node.lo).cwiseMin(node.hi)).squaredNorm(), node.max_radius)) return;
+    if (node.axis < 0) {
+      for (const Sphere& s : leaves_[node.child]) visit(s);
+      return;
+    }
+    const std::uint32_t nearer = p[node.axis] < node.split ? 0 : 1;
+    search(node.child + nearer, p, keep, visit);
+    search(node.child + 1 - nearer, p, keep, visit);
+  }
+  void split(std::uint32_t index);
+  void place(std::uint32_t leaf, const Sphere& s) {
+    slot_[s.ball] = {leaf, static_cast<std::uint32_t>(leaves_[leaf].size())};
+    leaves_[leaf].push_back(s);
+  }
+
+  std::vector<Node> nodes_;
+  std::vector<std::vector<Sphere>> leaves_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> slot_;  // per ball: its leaf and position there
 };
 
-// Centres in a k-d tree that grows; `ball[i]` is the ball of the tree's i-th point.
-struct CentreTree {
-  std::vector<Point> centres;
-  std::vector<std::uint32_t> ball;
-  Adaptor adaptor;
-  std::unique_ptr<Tree> tree;
-
-  CentreTree() {
-    adaptor.items = &centres;
-    tree = std::make_unique<Tree>(3, adaptor, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+void BallIndex::Tree::insert(const Point& centre, double radius, std::uint32_t ball) {
+  if (nodes_.empty()) {
+    nodes_.emplace_back();
+    leaves_.emplace_back();
   }
-  std::uint32_t add(const Point& p, std::uint32_t b) {
-    centres.push_back(p);
-    ball.push_back(b);
-    const auto local = static_cast<std::uint32_t>(centres.size() - 1);
-    tree->addPoints(local, local);
-    return local;
+  std::uint32_t index = 0;
+  for (;;) {
+    Node& node = nodes_[index];
+    node.include(centre, radius);
+    if (node.axis < 0) break;
+    index = node.child + (centre[node.axis] < node.split ? 0 : 1);
   }
-  void within(const Point& p, double distance, std::vector<std::uint32_t>& out) const {
-    if (centres.empty() || !(distance > 0)) return;
-    const double query[3] = {p.x(), p.y(), p.z()};
-    std::vector<std::uint32_t> local;
-    WithinRadius result(distance * distance, local);
-    tree->findNeighbors(result, query, nanoflann::SearchParams());
-    for (std::uint32_t i : local) out.push_back(ball[i]);
-  }
-};
-
-int radius_class(double radius) {
-  int exponent = 0;
-  std::frexp(radius, &exponent);  // radius in [2^(exponent-1), 2^exponent)
-  return exponent;
+  if (slot_.size() <= ball) slot_.resize(ball + 1);
+  place(nodes_[index].child, {centre, radius, ball});
+  if (leaves_[nodes_[index].child].size() > kLeafSize) split(index);
 }
 
-}  // namespace
+void BallIndex::Tree::split(std::uint32_t index) {
+  int axis;
+  (nodes_[index].hi - nodes_[index].lo).maxCoeff(&axis);
+  if (!(nodes_[index].hi[axis] > nodes_[index].lo[axis])) return;  // one centre many times: keep the leaf
+  const std::uint32_t left_leaf = nodes_[index].child;
+  std::vector<Sphere> spheres = std::move(leaves_[left_leaf]);
+  leaves_[left_leaf].clear();
+  std::vector<double> values;
+  for (const Sphere& s : spheres) values.push_back(s.centre[axis]);
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  double split = 0.5 * (values[middle - 1] + values[middle]);
+  if (!(split > values.front())) split = 0.5 * (values.front() + values.back());  // ties: both sides keep some
+  const auto child = static_cast<std::uint32_t>(nodes_.size());
+  nodes_.resize(nodes_.size() + 2);
+  nodes_[child].child = left_leaf;
+  nodes_[child + 1].child = static_cast<std::uint32_t>(leaves_.size());
+  leaves_.emplace_back();
+  for (const Sphere& s : spheres) {
+    Node& side = nodes_[child + (s.centre[axis] < split ? 0 : 1)];
+    side.include(s.centre, s.radius);
+    place(side.child, s);
+  }
+  Node& node = nodes_[index];
+  node.axis = axis;
+  node.split = split;
+  node.child = child;
+}
 
-struct BallIndex::Trees {
-  CentreTree all[3];
-  std::map<int, CentreTree> classes[3];
-};
-
-BallIndex::BallIndex() : trees_(std::make_unique<Trees>()) {}
+BallIndex::BallIndex() : trees_(std::make_unique<Tree[]>(3)) {}
 BallIndex::~BallIndex() = default;
 
 std::uint32_t BallIndex::add(const SurfaceSite& site, double radius) {
   const auto id = static_cast<std::uint32_t>(balls_.size());
   balls_.push_back({site, radius});
-  class_slot_.emplace_back(0, 0);
-  trees_->all[static_cast<int>(site.type)].add(site.position, id);
-  file_in_class(id);
+  trees_[static_cast<int>(site.type)].insert(site.position, radius, id);
   return id;
-}
-
-void BallIndex::file_in_class(std::uint32_t id) {
-  const RefinedBall& b = balls_[id];
-  const int k = radius_class(b.radius);
-  CentreTree& tree = trees_->classes[static_cast<int>(b.site.type)][k];
-  class_slot_[id] = {k, tree.add(b.site.position, id)};
 }
 
 void BallIndex::shrink(std::uint32_t i, double radius) {
   if (!(radius < balls_[i].radius)) return;
   balls_[i].radius = radius;
-  const auto [k, local] = class_slot_[i];
-  if (radius_class(radius) == k) return;
-  trees_->classes[static_cast<int>(balls_[i].site.type)][k].tree->removePoint(local);
-  file_in_class(i);
+  trees_[static_cast<int>(balls_[i].site.type)].shrink(i, radius);
 }
 
-std::int64_t BallIndex::nearest(StratumType type, const Point& p) const {
-  const CentreTree& t = trees_->all[static_cast<int>(type)];
-  if (t.centres.empty()) return -1;
-  const double query[3] = {p.x(), p.y(), p.z()};
-  FilteredNearest any([](std::uint32_t) { return true; });
-  t.tree->findNeighbors(any, query, nanoflann::SearchParams());
-  return t.ball[any.index()];
+double BallIndex::lipschitz_bound(StratumType type, const Point& p, double L) const {
+  double best = std::numeric_limits<double>::infinity();
+  trees_[static_cast<int>(type)].search(
+      p, [&](double d2, double) { return L * L * d2 < best * best; },
+      [&](const Tree::Sphere& s) { best = std::min(best, s.radius + L * (s.centre - p).norm()); });
+  return best;
 }
 
 void BallIndex::centres_within(StratumType type, const Point& p, double distance, std::vector<std::uint32_t>& out) const {
-  trees_->all[static_cast<int>(type)].within(p, distance, out);
+  const double limit = distance * distance;
+  trees_[static_cast<int>(type)].search(
+      p, [&](double d2, double) { return d2 < limit; },
+      [&](const Tree::Sphere& s) {
+        if ((s.centre - p).squaredNorm() < limit) out.push_back(s.ball);
+      });
 }
 
 void BallIndex::reaching(StratumType type, const Point& p, double margin, std::vector<std::uint32_t>& out) const {
-  // Removed points (balls refiled in another class) are skipped by nanoflann's search, so each
-  // ball is met at most once.
-  const double query[3] = {p.x(), p.y(), p.z()};
-  for (const auto& [k, tree] : trees_->classes[static_cast<int>(type)]) {
-    if (tree.centres.empty()) continue;
-    ReachingBalls result(std::ldexp(1.0, k) + margin, margin, tree.ball, balls_, out);
-    tree.tree->findNeighbors(result, query, nanoflann::SearchParams());
-  }
+  trees_[static_cast<int>(type)].search(
+      p, [&](double d2, double max_radius) { return d2 < (max_radius + margin) * (max_radius + margin); },
+      [&](const Tree::Sphere& s) {
+        if ((s.centre - p).squaredNorm() < (s.radius + margin) * (s.radius + margin)) out.push_back(s.ball);
+      });
 }
 
 void BallIndex::lipschitz_violators(StratumType type, const Point& p, double radius, double L,
                                     std::vector<std::uint32_t>& out) const {
-  // A ball of class k (radius below 2^k) can violate C3 only within (2^k - radius) / L of p.
-  std::vector<std::uint32_t> near;
-  for (const auto& [k, tree] : trees_->classes[static_cast<int>(type)]) {
-    near.clear();
-    tree.within(p, (std::ldexp(1.0, k) - radius) / L, near);
-    for (std::uint32_t b : near) {
-      if (balls_[b].radius > radius + L * (balls_[b].site.position - p).norm()) out.push_back(b);
-    }
-  }
+  // A subtree can hold a violator only if its largest radius exceeds radius + L * (its distance).
+  trees_[static_cast<int>(type)].search(
+      p, [&](double d2, double max_radius) { return max_radius > radius && L * L * d2 < (max_radius - radius) * (max_radius - radius); },
+      [&](const Tree::Sphere& s) {
+        if (s.radius > radius + L * (s.centre - p).norm()) out.push_back(s.ball);
+      });
 }
 
 }  // namespace vorocrust

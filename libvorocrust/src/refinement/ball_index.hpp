@@ -1,5 +1,5 @@
-// Internal: the growing set of balls, with one k-d tree of centres per stratum type (paper A.3,
-// A.4). Balls are only ever added or shrunk, never moved, so the trees index centres once.
+// Internal: the growing set of balls, with one tree of balls per stratum type (paper A.3, A.4).
+// Balls are only ever added or shrunk, never moved, so the trees index centres once.
 #pragma once
 
 #include <memory>
@@ -26,8 +26,9 @@ class BallIndex {
   // Radii only shrink: shrinking is how every violation is resolved.
   void shrink(std::uint32_t i, double radius);
 
-  // The ball of `type` whose centre is nearest to `p`, or -1 when there is none.
-  std::int64_t nearest(StratumType type, const Point& p) const;
+  // min over the balls q of `type` of r_q + L |p - q|: the largest radius a ball at p may have
+  // under C3 (infinity when the type has no ball).
+  double lipschitz_bound(StratumType type, const Point& p, double L) const;
   // Balls of `type` with centres strictly within `distance` of `p` (appended to `out`).
   void centres_within(StratumType type, const Point& p, double distance, std::vector<std::uint32_t>& out) const;
   // Balls of `type` that reach within `margin` of `p` (|p - centre| < radius + margin); with
@@ -38,15 +39,9 @@ class BallIndex {
                            std::vector<std::uint32_t>& out) const;
 
  private:
-  // Paper A.3/A.4 bound neighbourhoods through the Lipschitz condition, which holds only after it
-  // is enforced. Instead each type's balls are also filed by radius class [2^k, 2^(k+1)): a
-  // search per class with radius 2^(k+1) + margin finds every reaching ball at any time, and
-  // stays local because radii vary slowly.
-  struct Trees;
-  void file_in_class(std::uint32_t ball);
+  class Tree;
   std::vector<RefinedBall> balls_;
-  std::vector<std::pair<int, std::uint32_t>> class_slot_;  // per ball: radius class, index in it
-  std::unique_ptr<Trees> trees_;
+  std::unique_ptr<Tree[]> trees_;  // one per stratum type
 };
 
 }  // namespace vorocrust

@@ -185,19 +185,10 @@ void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, std::size_t
   mark_dirty(b.site.position, old_radius, b.site.type);
 }
 
-// The paper bounds r_p by the ball nearest to p alone (r_q + L |p - q|); taking every ball of the
-// type that could lower the bound (those within r_p / L) leaves no C3 violation by the new ball.
+// The paper bounds r_p by the ball nearest to p alone (r_q + L |p - q|); the bound over every ball
+// of the type leaves no C3 violation by the new ball.
 double BallRefinement::Impl::initial_radius(const SurfaceSite& site) {
-  const double L = options_.lipschitz;
-  double r = sizing_(site.position);
-  const std::int64_t nearest = balls_.nearest(site.type, site.position);
-  if (nearest >= 0) {
-    const RefinedBall& near = balls_[static_cast<std::uint32_t>(nearest)];
-    r = std::min(r, near.radius + L * (near.site.position - site.position).norm());
-    scratch_.clear();
-    balls_.centres_within(site.type, site.position, r / L, scratch_);
-    for (std::uint32_t q : scratch_) r = std::min(r, balls_[q].radius + L * (balls_[q].site.position - site.position).norm());
-  }
+  const double r = std::min(sizing_(site.position), balls_.lipschitz_bound(site.type, site.position, options_.lipschitz));
   // q* matters only where 0.49 |p - q*| would undercut the other bounds.
   return std::min(r, kSeparation * boundary_.distance_to_non_cosmooth(site, cosmooth_, r / kSeparation));
 }
