@@ -41,6 +41,35 @@ double covering_radius(StratumType phase, StratumType ball_type, double radius, 
   if (phase == StratumType::Crease && ball_type == StratumType::Corner) return deep * radius;
   return radius;
 }
+// A ball that must shrink to `radius`.
+struct Shrink {
+  std::uint32_t ball;
+  double radius;
+};
+
+// Where shrunk balls gave up cover, as boxes: a piece of an element that lost cover needs
+// sampling only where it meets one of them.
+class LostRegions {
+ public:
+  explicit LostRegions(const std::vector<geometry::Box>& boxes) : tree_(boxes, numbered(boxes.size())) {}
+  bool meets(const Subface& piece) const {
+    if (!piece.focused) return true;
+    geometry::Box box;
+    for (int k = 0; k < piece.corner_count(); ++k) box.include(piece.corner(k));
+    bool hit = false;
+    tree_.for_each_overlap(box, [&](std::uint32_t) { hit = true; });
+    return hit;
+  }
+
+ private:
+  static std::vector<std::uint32_t> numbered(std::size_t n) {
+    std::vector<std::uint32_t> items(n);
+    for (std::uint32_t i = 0; i < n; ++i) items[i] = i;
+    return items;
+  }
+  geometry::BoxTree tree_;
+};
+
 double diagonal(const SurfaceMesh& mesh) {
   Eigen::AlignedBox3d box;
   for (const Point& p : mesh.vertices) box.extend(p);
@@ -93,9 +122,15 @@ class BallRefinement::Impl {
   void shrink_neighbours_for_lipschitz(std::uint32_t ball);
   // Balls of every type that reach the subface; a child's are among its parent's.
   void reaching(const Subface& s, std::vector<std::uint32_t>& out) const;
-  bool discard(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates);
-  void check_violations(const Subface& s, const std::vector<std::uint32_t>& candidates);
+  bool covers(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates,
+              std::vector<CoverBall>& cover) const;
+  void find_violations(const Subface& s, const std::vector<std::uint32_t>& candidates, std::vector<Shrink>& out) const;
   SurfaceSite site_on(const Subface& s, const Point& p) const;
+  std::vector<Subface> initial_pool(StratumType type);
+  void throw_darts(StratumType type, const std::vector<Subface>& pool, std::string_view phase);
+  std::vector<Subface> subdivide(StratumType type, const std::vector<Subface>& pool, bool last_level,
+                                 const LostRegions& lost);
+  void check_pool_size(const std::vector<Subface>& pool, int depth) const;
 
   // --- shrinking ------------------------------------------------------------------------------
   void shrink(std::uint32_t ball, double radius, std::size_t& counter);
@@ -259,11 +294,46 @@ void BallRefinement::Impl::reaching(const Subface& s, std::vector<std::uint32_t>
   for (int t = 0; t < 3; ++t) balls_.reaching(static_cast<StratumType>(t), centroid, reach, out);
 }
 
-// Paper 2.3 "Detecting Violations": every ball reaching the subface must be co-smooth with it,
-// checked at the point of the subface nearest to the centre and at the corners it contains.
-void BallRefinement::Impl::check_violations(const Subface& s, const std::vector<std::uint32_t>& candidates) {
+// A subface leaves the pool once it is covered: by balls of a lower type (whose inside is kept
+// from higher phases) or deeply by balls of its own type, every ball co-smooth with it. One ball
+// is tried first; then their union, which spares splitting the fringe where balls meet down to
+// pieces that fit in one. Balls are first judged by the sphere around the piece.
+bool BallRefinement::Impl::covers(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates,
+                                  std::vector<CoverBall>& cover) const {
+  const Point centroid = s.centroid();
+  const double reach = s.circumradius(centroid);
+  const SurfaceSite site = site_on(s, centroid);
+  cover.clear();
   for (std::uint32_t b : candidates) {
     const RefinedBall& ball = balls_[b];
+    if (ball.site.type > type) continue;
+    const double limit = covering_radius(type, ball.site.type, ball.radius, deep_);
+    const double d = (ball.site.position - centroid).norm();
+    if (d - reach >= limit) continue;  // the piece lies beyond it
+    const bool holds_all = d + reach < limit;
+    if (!holds_all && !((s.closest_point(ball.site.position) - ball.site.position).norm() < limit)) continue;
+    if (!cosmooth_(ball.site, site)) continue;
+    if (holds_all) return true;
+    cover.push_back({ball.site.position, limit});
+  }
+  for (const CoverBall& c : cover) {
+    bool all = true;
+    for (int k = 0; k < s.corner_count() && all; ++k) all = (s.corner(k) - c.centre).norm() <= c.radius;
+    if (all) return true;
+  }
+  if (s.is_segment()) return segment_covered(s.corner(0), s.corner(1), cover);
+  return triangle_covered(s.corner(0), s.corner(1), s.corner(2), cover);
+}
+
+// Paper 2.3 "Detecting Violations": every ball reaching the subface must be co-smooth with it,
+// checked at the point of the subface nearest to the centre and at the corners it contains.
+void BallRefinement::Impl::find_violations(const Subface& s, const std::vector<std::uint32_t>& candidates,
+                                           std::vector<Shrink>& out) const {
+  const Point centroid = s.centroid();
+  const double reach = s.circumradius(centroid);
+  for (std::uint32_t b : candidates) {
+    const RefinedBall& ball = balls_[b];
+    if ((ball.site.position - centroid).norm() - reach >= ball.radius) continue;
     const Point q = s.closest_point(ball.site.position);
     const double d = (q - ball.site.position).norm();
     if (!(d < ball.radius)) continue;
@@ -271,40 +341,8 @@ void BallRefinement::Impl::check_violations(const Subface& s, const std::vector<
     for (int k = 0; k < s.corner_count() && !violates; ++k) {
       if ((s.corner(k) - ball.site.position).norm() < ball.radius) violates = !cosmooth_(ball.site, site_on(s, s.corner(k)));
     }
-    if (violates) shrink(b, kSeparation * d, stats_.c1_shrinks);
+    if (violates) out.push_back({b, kSeparation * d});
   }
-}
-
-// A subface leaves the pool once it is covered: by balls of a lower type (whose inside is kept
-// from higher phases) or deeply by balls of its own type, every ball co-smooth with it. One ball
-// is tried first; then their union, which spares splitting the fringe where balls meet down to
-// pieces that fit in one.
-bool BallRefinement::Impl::discard(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates) {
-  const Point centroid = s.centroid();
-  const auto covering = [&] {
-    std::vector<CoverBall> cover;
-    for (std::uint32_t b : candidates) {
-      const RefinedBall& ball = balls_[b];
-      if (ball.site.type > type) continue;
-      const double limit = covering_radius(type, ball.site.type, ball.radius, deep_);
-      if (!((s.closest_point(ball.site.position) - ball.site.position).norm() < limit)) continue;
-      if (!cosmooth_(ball.site, site_on(s, centroid))) continue;
-      cover.push_back({ball.site.position, limit});
-    }
-    return cover;
-  };
-  const auto covered_by = [&](const std::vector<CoverBall>& cover) {
-    for (const CoverBall& c : cover) {
-      bool all = true;
-      for (int k = 0; k < s.corner_count() && all; ++k) all = (s.corner(k) - c.centre).norm() <= c.radius;
-      if (all) return true;
-    }
-    if (s.is_segment()) return segment_covered(s.corner(0), s.corner(1), cover);
-    return triangle_covered(s.corner(0), s.corner(1), s.corner(2), cover);
-  };
-  if (!covered_by(covering())) return false;
-  check_violations(s, candidates);
-  return covered_by(covering());  // the check may have shrunk a ball that covered the subface
 }
 
 void BallRefinement::Impl::protect_corners() {
@@ -320,24 +358,7 @@ void BallRefinement::Impl::protect_corners() {
   }
 }
 
-void BallRefinement::Impl::sample(StratumType type) {
-  // Only the lost regions recorded so far can have lost cover; later losses are the next pass's.
-  std::vector<geometry::Box>& lost = type == StratumType::Crease ? lost_edges_ : lost_faces_;
-  std::vector<geometry::Box> lost_boxes = std::move(lost);
-  lost.clear();
-  std::vector<std::uint32_t> lost_items(lost_boxes.size());
-  for (std::uint32_t i = 0; i < lost_items.size(); ++i) lost_items[i] = i;
-  const geometry::BoxTree lost_tree(lost_boxes, std::move(lost_items));
-  // A piece of an element that lost cover needs sampling only where it meets a lost region.
-  const auto still_needed = [&](const Subface& piece) {
-    if (!piece.focused) return true;
-    geometry::Box box;
-    for (int k = 0; k < piece.corner_count(); ++k) box.include(piece.corner(k));
-    bool hit = false;
-    lost_tree.for_each_overlap(box, [&](std::uint32_t) { hit = true; });
-    return hit;
-  };
-
+std::vector<Subface> BallRefinement::Impl::initial_pool(StratumType type) {
   std::vector<Subface> pool;
   if (type == StratumType::Crease) {
     for (Index e = 0; e < dirty_edge_.size(); ++e) {
@@ -356,6 +377,87 @@ void BallRefinement::Impl::sample(StratumType type) {
       dirty_face_[f] = kClean;
     }
   }
+  return pool;
+}
+
+// Darts land in the pool in proportion to measure until kMissLimit land in a row where balls
+// already cover.
+void BallRefinement::Impl::throw_darts(StratumType type, const std::vector<Subface>& pool, std::string_view phase) {
+  std::vector<double> prefix(pool.size());
+  double total = 0;
+  for (std::size_t i = 0; i < pool.size(); ++i) prefix[i] = total += pool[i].measure();
+  if (!(total > 0)) return;
+  for (int misses = 0; misses < kMissLimit;) {
+    const double u = unit_(rng_) * total;
+    const std::size_t i = std::min<std::size_t>(std::upper_bound(prefix.begin(), prefix.end(), u) - prefix.begin(), pool.size() - 1);
+    const Point p = pool[i].random_point(rng_, unit_);
+    misses = try_dart(type, site_on(pool[i], p)) ? 0 : misses + 1;
+    if ((stats_.darts & 1023) == 0) report(phase, -1);
+  }
+}
+
+// One level of the pool: every piece splits, and a child stays where it is still needed and not
+// covered. The pieces are tested in parallel against the radii as they stand, which no test
+// changes. The balls found violating C1 shrink afterwards, in pool order, and the pieces that
+// found them stay in the pool to be tested again, so the result does not depend on the thread
+// count. (Cover that a shrinking ball gave up elsewhere is lost cover, sampled in a later pass.)
+std::vector<Subface> BallRefinement::Impl::subdivide(StratumType type, const std::vector<Subface>& pool, bool last_level,
+                                                     const LostRegions& lost) {
+  struct Outcome {
+    std::uint8_t kept = 0;  // bit k: child k stays
+    std::vector<Shrink> violations;
+  };
+  std::vector<Outcome> outcomes(pool.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pool.size(), 256), [&](const auto& range) {
+    std::vector<std::uint32_t> candidates;
+    std::vector<CoverBall> cover;
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      reaching(pool[i], candidates);
+      const auto children = pool[i].split();
+      for (std::size_t k = 0; k < children.size(); ++k) {
+        const Subface& child = children[k];
+        if (last_level || !(child.measure() > 0) || !lost.meets(child)) continue;  // below any meaningful size
+        const std::size_t found = outcomes[i].violations.size();
+        if (covers(type, child, candidates, cover)) {
+          find_violations(child, candidates, outcomes[i].violations);
+          if (outcomes[i].violations.size() == found) continue;
+        }
+        outcomes[i].kept |= 1 << k;
+      }
+    }
+  });
+  std::vector<Subface> next;
+  next.reserve(pool.size() * 2);
+  for (std::size_t i = 0; i < pool.size(); ++i) {
+    for (const Shrink& v : outcomes[i].violations) shrink(v.ball, v.radius, stats_.c1_shrinks);
+    if (outcomes[i].kept == 0) continue;
+    const auto children = pool[i].split();
+    for (std::size_t k = 0; k < children.size(); ++k) {
+      if (outcomes[i].kept >> k & 1) next.push_back(children[k]);
+    }
+  }
+  return next;
+}
+
+// Legitimate runs keep well under 10 pieces per input face; a pool this large only grows along a
+// curve no stratum protects, where balls cannot converge (crossing surfaces).
+void BallRefinement::Impl::check_pool_size(const std::vector<Subface>& pool, int depth) const {
+  if (pool.size() <= std::max<std::size_t>(250'000, 60 * mesh_.num_faces())) return;
+  const Subface& where = pool.front();
+  const Index face = where.is_segment() ? strata_.topology.faces_of(where.element)[0] : where.element;
+  throw Error(Error::Kind::InvalidGeometry,
+              "refinement cannot converge: " + std::to_string(pool.size()) + " pieces of the surface stay " +
+                  "uncovered after " + std::to_string(depth) + " subdivisions, first near " +
+                  describe_face(mesh_, face) + "; surfaces that intersect or nearly touch are the usual cause",
+              {.face = face});
+}
+
+void BallRefinement::Impl::sample(StratumType type) {
+  // Only the lost regions recorded so far can have lost cover; later losses are the next pass's.
+  std::vector<geometry::Box>& lost_boxes = type == StratumType::Crease ? lost_edges_ : lost_faces_;
+  const LostRegions lost(lost_boxes);
+  lost_boxes.clear();
+  std::vector<Subface> pool = initial_pool(type);
   // Each return of the phase loop to this type is a pass of its own, with its own progress.
   const int pass = ++passes_[static_cast<int>(type)];
   const std::string phase = std::string(type == StratumType::Crease ? "refinement: creases" : "refinement: patches") +
@@ -363,48 +465,16 @@ void BallRefinement::Impl::sample(StratumType type) {
   // Progress: the share of the elements sampled in this pass that have no piece left in the
   // pool. (The remaining area vanishes long before the work does, so it would be a poor guide.)
   std::vector<char> pending(type == StratumType::Crease ? strata_.topology.num_edges() : mesh_.num_faces(), 0);
-  std::size_t initial_elements = pool.size();
-  std::vector<double> prefix;
+  const std::size_t initial_elements = pool.size();
   for (int depth = 0; !pool.empty(); ++depth) {
-    prefix.resize(pool.size());
-    double total = 0;
-    for (std::size_t i = 0; i < pool.size(); ++i) prefix[i] = total += pool[i].measure();
     std::size_t elements = 0;
     for (const Subface& piece : pool) elements += !pending[piece.element] && (pending[piece.element] = 1);
     for (const Subface& piece : pool) pending[piece.element] = 0;
     report(phase, initial_elements > 0 ? 1.0 - static_cast<double>(elements) / initial_elements : -1);
-    if (total > 0) {
-      for (int misses = 0; misses < kMissLimit;) {
-        const double u = unit_(rng_) * total;
-        const std::size_t i = std::min<std::size_t>(std::upper_bound(prefix.begin(), prefix.end(), u) - prefix.begin(), pool.size() - 1);
-        const Point p = pool[i].random_point(rng_, unit_);
-        misses = try_dart(type, site_on(pool[i], p)) ? 0 : misses + 1;
-        if ((stats_.darts & 1023) == 0) report(phase, -1);
-      }
-    }
+    throw_darts(type, pool, phase);
     ++stats_.subdivisions;
-    std::vector<Subface> next;
-    next.reserve(pool.size() * 2);
-    std::vector<std::uint32_t> candidates;
-    for (const Subface& s : pool) {
-      reaching(s, candidates);
-      for (const Subface& child : s.split()) {
-        if (depth + 1 >= kMaxDepth || !(child.measure() > 0)) continue;  // below any meaningful size
-        if (still_needed(child) && !discard(type, child, candidates)) next.push_back(child);
-      }
-    }
-    // Legitimate runs keep well under 10 pieces per input face; a pool this large only grows
-    // along a curve no stratum protects, where balls cannot converge (crossing surfaces).
-    if (next.size() > std::max<std::size_t>(250'000, 60 * mesh_.num_faces())) {
-      const Subface& where = next.front();
-      const Index face = where.is_segment() ? strata_.topology.faces_of(where.element)[0] : where.element;
-      throw Error(Error::Kind::InvalidGeometry,
-                  "refinement cannot converge: " + std::to_string(next.size()) + " pieces of the surface stay " +
-                      "uncovered after " + std::to_string(depth + 1) + " subdivisions, first near " +
-                      describe_face(mesh_, face) + "; surfaces that intersect or nearly touch are the usual cause",
-                  {.face = face});
-    }
-    pool = std::move(next);
+    pool = subdivide(type, pool, depth + 1 >= kMaxDepth, lost);
+    check_pool_size(pool, depth + 1);
   }
 }
 
