@@ -5,6 +5,7 @@
 #include <cmath>
 #include <random>
 
+#include "geometry/box_tree.hpp"
 #include "geometry/surface_sampling.hpp"
 #include "refinement/point_cloud.hpp"
 #include "refinement/subface.hpp"
@@ -21,10 +22,47 @@ using Tree = StaticKdTree<Adaptor>;
 
 }  // namespace
 
-struct BoundarySamples::Trees {
-  Adaptor adaptors[3];
-  std::unique_ptr<Tree> trees[3];
+// Patch samples of one face, few enough to scan.
+struct SampleGroup {
+  Index face;
+  std::uint32_t begin, end;  // a range of the patch samples
 };
+
+// Corner and crease samples in k-d trees; patch samples, by far the most, in groups of one face
+// under a bounding-volume hierarchy, so that a query can pass over whole faces at once.
+struct BoundarySamples::Trees {
+  Adaptor adaptors[2];
+  std::unique_ptr<Tree> trees[2];  // corner, crease
+  std::vector<SampleGroup> groups;
+  std::unique_ptr<geometry::BoxTree> group_tree;  // over the groups' boxes
+  std::vector<Point> face_points;                 // per face, a point of its plane
+};
+
+namespace {
+
+constexpr std::uint32_t kGroupSize = 32;
+
+// Splits samples [begin, end) of one face at the median of their widest spread until groups are
+// small; appends the groups and their boxes.
+void group_face(std::vector<SurfaceSite>& sites, Index face, std::uint32_t begin, std::uint32_t end,
+                std::vector<SampleGroup>& groups, std::vector<geometry::Box>& boxes) {
+  geometry::Box box;
+  for (std::uint32_t i = begin; i < end; ++i) box.include(sites[i].position);
+  if (end - begin <= kGroupSize) {
+    groups.push_back({face, begin, end});
+    boxes.push_back(box);
+    return;
+  }
+  int axis;
+  (box.hi - box.lo).maxCoeff(&axis);
+  const std::uint32_t middle = begin + (end - begin) / 2;
+  std::nth_element(sites.begin() + begin, sites.begin() + middle, sites.begin() + end,
+                   [axis](const SurfaceSite& a, const SurfaceSite& b) { return a.position[axis] < b.position[axis]; });
+  group_face(sites, face, begin, middle, groups, boxes);
+  group_face(sites, face, middle, end, groups, boxes);
+}
+
+}  // namespace
 
 BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, const BoundarySampleCounts& counts,
                                  std::uint64_t seed)
@@ -90,14 +128,30 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
     }
   }
 
-  for (int t = 0; t < 3; ++t) {
+  for (int t = 0; t < 2; ++t) {
     trees_->adaptors[t].items = &sites_[t];
     trees_->trees[t] = std::make_unique<Tree>(3, trees_->adaptors[t], nanoflann::KDTreeSingleIndexAdaptorParams(16));
-
   }
+  group_patch_samples(mesh);
 }
 
 BoundarySamples::~BoundarySamples() = default;
+
+// Orders the patch samples by face and files them in small groups of one face each.
+void BoundarySamples::group_patch_samples(const SurfaceMesh& mesh) {
+  auto& patch = sites_[static_cast<int>(StratumType::Patch)];
+  std::stable_sort(patch.begin(), patch.end(), [](const SurfaceSite& a, const SurfaceSite& b) { return a.element < b.element; });
+  std::vector<geometry::Box> boxes;
+  for (std::uint32_t begin = 0, end = 0; begin < patch.size(); begin = end) {
+    while (end < patch.size() && patch[end].element == patch[begin].element) ++end;
+    group_face(patch, patch[begin].element, begin, end, trees_->groups, boxes);
+  }
+  std::vector<std::uint32_t> items(trees_->groups.size());
+  for (std::uint32_t i = 0; i < items.size(); ++i) items[i] = i;
+  trees_->group_tree = std::make_unique<geometry::BoxTree>(std::move(boxes), std::move(items));
+  trees_->face_points.reserve(mesh.num_faces());
+  for (const Triangle& t : mesh.triangles) trees_->face_points.push_back(mesh.vertices[t[0]]);
+}
 
 std::size_t BoundarySamples::size() const { return sites_[0].size() + sites_[1].size() + sites_[2].size(); }
 
@@ -105,24 +159,41 @@ double BoundarySamples::distance_to_non_cosmooth(const SurfaceSite& center, cons
                                                  double limit) const {
   double best = limit * limit;
   const double query[3] = {center.position.x(), center.position.y(), center.position.z()};
-  for (int t = 0; t < 3; ++t) {
+  for (int t = 0; t < 2; ++t) {
     if (sites_[t].empty()) continue;
     const auto& sites = sites_[t];
     FilteredNearest nearest([&](std::uint32_t i) { return !cosmooth(center, sites[i]); }, best);
     trees_->trees[t]->findNeighbors(nearest, query, nanoflann::SearchParams());
     best = std::min(best, nearest.squared_distance());
   }
+  nearest_non_cosmooth_patch_sample(center, cosmooth, best);
   return std::sqrt(best);
 }
 
-std::vector<std::uint32_t> BoundarySamples::within(StratumType type, const Point& center, double radius) const {
-  std::vector<std::uint32_t> found;
-  const int t = static_cast<int>(type);
-  if (sites_[t].empty()) return found;
-  const double query[3] = {center.x(), center.y(), center.z()};
-  WithinRadius result(radius * radius, found);
-  trees_->trees[t]->findNeighbors(result, query, nanoflann::SearchParams());
-  return found;
+// The filtered search over the patch samples, one face at a time: a group is skipped when every
+// sample in it lies beyond the face's non-co-smooth reach (most faces near a centre lie in its own
+// patch and bend too little to hold a point that is not co-smooth with it). Only an optimisation:
+// the samples scanned meet the same test, so the result equals a search over all samples.
+void BoundarySamples::nearest_non_cosmooth_patch_sample(const SurfaceSite& center, const CoSmoothness& cosmooth,
+                                                        double& best) const {
+  if (!trees_->group_tree || !(best > 0)) return;
+  const Point& p = center.position;
+  const double search = std::sqrt(best);
+  geometry::Box query;
+  query.include(Point(p.array() - search));
+  query.include(Point(p.array() + search));
+  const auto& sites = sites_[static_cast<int>(StratumType::Patch)];
+  trees_->group_tree->for_each_overlap(query, [&](std::uint32_t g) {
+    const SampleGroup& group = trees_->groups[g];
+    const geometry::Box& box = trees_->group_tree->box(g);
+    const double reach = cosmooth.non_cosmooth_reach(center, group.face, trees_->face_points[group.face]);
+    const double gap2 = (p - p.cwiseMax(box.lo).cwiseMin(box.hi)).squaredNorm();
+    if (!(gap2 < best) || !(gap2 < reach * reach)) return;
+    for (std::uint32_t i = group.begin; i < group.end; ++i) {
+      const double d2 = (sites[i].position - p).squaredNorm();
+      if (d2 < best && !cosmooth(center, sites[i])) best = d2;
+    }
+  });
 }
 
 }  // namespace vorocrust

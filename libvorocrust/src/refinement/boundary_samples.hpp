@@ -1,7 +1,8 @@
 // Internal: the boundary k-d trees of paper appendix A.1 and the filtered nearest-point query of
 // A.2. The input is supersampled — corners exactly, creases and patches densely (random points in
 // proportion to length or area, plus every element's midpoint or centroid and points near its
-// corners, so no element is missed) — and each sample carries its SurfaceSite.
+// corners, so no element is missed) — and each sample carries its SurfaceSite. Patch samples are
+// filed by face, which lets the filtered query pass over faces that cannot hold a sample it wants.
 #pragma once
 
 #include <cstdint>
@@ -33,26 +34,17 @@ class BoundarySamples {
   double distance_to_non_cosmooth(const SurfaceSite& center, const CoSmoothness& cosmooth,
                                   double limit = std::numeric_limits<double>::infinity()) const;
 
-  // Calls visit(sample) for every sample strictly inside the ball (center, radius).
-  template <class Visit>
-  void for_each_within(const Point& center, double radius, Visit&& visit) const;
-
   std::size_t size() const;
   const std::vector<SurfaceSite>& samples(StratumType type) const { return sites_[static_cast<int>(type)]; }
 
  private:
-  std::vector<std::uint32_t> within(StratumType type, const Point& center, double radius) const;
+  void group_patch_samples(const SurfaceMesh& mesh);
+  // Lowers `best` (a squared distance) to that of the nearest patch sample not co-smooth with center.
+  void nearest_non_cosmooth_patch_sample(const SurfaceSite& center, const CoSmoothness& cosmooth, double& best) const;
 
   struct Trees;
   std::vector<SurfaceSite> sites_[3];
   std::unique_ptr<Trees> trees_;
 };
-
-template <class Visit>
-void BoundarySamples::for_each_within(const Point& center, double radius, Visit&& visit) const {
-  for (int t = 0; t < 3; ++t) {
-    for (std::uint32_t i : within(static_cast<StratumType>(t), center, radius)) visit(sites_[t][i]);
-  }
-}
 
 }  // namespace vorocrust

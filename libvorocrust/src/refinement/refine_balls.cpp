@@ -505,7 +505,7 @@ void BallRefinement::Impl::enforce_lipschitz(StratumType type) {
 }
 
 // C1 and C2 over dense samples: a ball holding a sample it is not co-smooth with shrinks to
-// 0.49 of the distance; two overlapping balls neither of which is co-smooth with the other's
+// 0.49 of the distance to the nearest such sample; two overlapping balls neither of which is co-smooth with the other's
 // centre both shrink apart.
 bool BallRefinement::Impl::sweep() {
   const auto start = Clock::now();
@@ -516,9 +516,8 @@ bool BallRefinement::Impl::sweep() {
     for (std::size_t b = range.begin(); b != range.end(); ++b) {
       const RefinedBall& ball = balls_[static_cast<std::uint32_t>(b)];
       double r = ball.radius;
-      boundary_.for_each_within(ball.site.position, ball.radius, [&](const SurfaceSite& x) {
-        if (!cosmooth_(ball.site, x)) r = std::min(r, kSeparation * (x.position - ball.site.position).norm());
-      });
+      const double q_star = boundary_.distance_to_non_cosmooth(ball.site, cosmooth_, ball.radius);
+      if (q_star < ball.radius) r = kSeparation * q_star;
       for (int t = 0; t < 3; ++t) {
         near.clear();
         balls_.reaching(static_cast<StratumType>(t), ball.site.position, ball.radius, near);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vorocrust {
 
@@ -55,6 +56,24 @@ bool CoSmoothness::operator()(const SurfaceSite& center, const SurfaceSite& x) c
   }
   if (x.type < center.type) return false;
   return incident(center.type, center.stratum, x.type, x.stratum) && position_test(center, x);
+}
+
+// The test above for a point x of the face, folded over the whole face: strata and directions are
+// the face's own, and the offset d = x - center has the same component along the face's normal for
+// every x of its plane, so the position test |n . d| <= sin(theta) |d| fails only nearer than
+// |n . d| / sin(theta). The margin covers rounding: samples lie on the plane up to it.
+double CoSmoothness::non_cosmooth_reach(const SurfaceSite& center, Index face, const Point& on_plane) const {
+  constexpr double kAnywhere = std::numeric_limits<double>::infinity();
+  const Index patch = strata_.face_patch[face];
+  const Point& normal = strata_.face_normals[face];
+  if (center.type == StratumType::Patch) {
+    if (face == center.element) return 0;
+    if (patch != center.stratum || center.direction.dot(normal) < cos_theta_) return kAnywhere;
+  } else if (!incident(center.type, center.stratum, StratumType::Patch, patch)) {
+    return kAnywhere;
+  }
+  const double margin = 1e-9 * (center.position.norm() + on_plane.norm());
+  return (std::abs(normal.dot(on_plane - center.position)) + margin) / sin_theta_;
 }
 
 }  // namespace vorocrust

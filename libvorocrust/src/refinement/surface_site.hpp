@@ -28,6 +28,10 @@ class CoSmoothness {
   CoSmoothness(const Strata& strata, double sharp_angle, double negligible);
 
   bool operator()(const SurfaceSite& center, const SurfaceSite& x) const;
+  // How near to `center` a point of patch face `face` may lie and still fail to be co-smooth with
+  // it, given `on_plane`, any point of the face's plane: the points of the face at this distance
+  // or beyond all are co-smooth. 0 when every point of the face is; infinity when none need be.
+  double non_cosmooth_reach(const SurfaceSite& center, Index face, const Point& on_plane) const;
   // Whether stratum `higher` is incident to stratum `lower` (of lower dimension).
   bool incident(StratumType lower_type, Index lower, StratumType higher_type, Index higher) const;
 
