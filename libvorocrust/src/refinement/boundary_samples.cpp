@@ -35,7 +35,7 @@ struct BoundarySamples::Trees {
   std::unique_ptr<Tree> trees[2];  // corner, crease
   std::vector<SampleGroup> groups;
   std::unique_ptr<geometry::BoxTree> group_tree;  // over the groups' boxes
-  std::vector<Point> face_points;                 // per face, a point of its plane
+  std::vector<SurfaceSite> face_sites;            // per face, the site of a point of its plane
 };
 
 namespace {
@@ -44,10 +44,10 @@ constexpr std::uint32_t kGroupSize = 32;
 
 // Splits samples [begin, end) of one face at the median of their widest spread until groups are
 // small; appends the groups and their boxes.
-void group_face(std::vector<SurfaceSite>& sites, Index face, std::uint32_t begin, std::uint32_t end,
+void group_face(std::vector<Point>& points, Index face, std::uint32_t begin, std::uint32_t end,
                 std::vector<SampleGroup>& groups, std::vector<geometry::Box>& boxes) {
   geometry::Box box;
-  for (std::uint32_t i = begin; i < end; ++i) box.include(sites[i].position);
+  for (std::uint32_t i = begin; i < end; ++i) box.include(points[i]);
   if (end - begin <= kGroupSize) {
     groups.push_back({face, begin, end});
     boxes.push_back(box);
@@ -56,10 +56,10 @@ void group_face(std::vector<SurfaceSite>& sites, Index face, std::uint32_t begin
   int axis;
   (box.hi - box.lo).maxCoeff(&axis);
   const std::uint32_t middle = begin + (end - begin) / 2;
-  std::nth_element(sites.begin() + begin, sites.begin() + middle, sites.begin() + end,
-                   [axis](const SurfaceSite& a, const SurfaceSite& b) { return a.position[axis] < b.position[axis]; });
-  group_face(sites, face, begin, middle, groups, boxes);
-  group_face(sites, face, middle, end, groups, boxes);
+  std::nth_element(points.begin() + begin, points.begin() + middle, points.begin() + end,
+                   [axis](const Point& a, const Point& b) { return a[axis] < b[axis]; });
+  group_face(points, face, begin, middle, groups, boxes);
+  group_face(points, face, middle, end, groups, boxes);
 }
 
 }  // namespace
@@ -105,17 +105,19 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
   }
 
   // Patches: every face's centroid and points near its corners, then random points by area.
-  auto& patch = sites_[static_cast<int>(StratumType::Patch)];
+  std::vector<Index> faces;
+  std::vector<Point> points;
   std::vector<double> areas(mesh.num_faces());
   for (Index f = 0; f < mesh.num_faces(); ++f) {
     const Point& a = mesh.vertices[mesh.triangles[f][0]];
     const Point& b = mesh.vertices[mesh.triangles[f][1]];
     const Point& c = mesh.vertices[mesh.triangles[f][2]];
     areas[f] = 0.5 * (b - a).cross(c - a).norm();
-    patch.push_back(patch_site(strata, f, (a + b + c) / 3));
-    patch.push_back(patch_site(strata, f, 0.9 * a + 0.05 * b + 0.05 * c));
-    patch.push_back(patch_site(strata, f, 0.05 * a + 0.9 * b + 0.05 * c));
-    patch.push_back(patch_site(strata, f, 0.05 * a + 0.05 * b + 0.9 * c));
+    for (const Point& p : {Point((a + b + c) / 3), Point(0.9 * a + 0.05 * b + 0.05 * c),
+                           Point(0.05 * a + 0.9 * b + 0.05 * c), Point(0.05 * a + 0.05 * b + 0.9 * c)}) {
+      faces.push_back(f);
+      points.push_back(p);
+    }
   }
   if (mesh.num_faces() > 0) {
     const geometry::WeightedPick pick(areas);
@@ -124,7 +126,8 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
       const Index f = static_cast<Index>(pick(unit(rng)));
       const Triangle& t = mesh.triangles[f];
       const Subface face = Subface::triangle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], f);
-      patch.push_back(patch_site(strata, f, face.random_point(rng, unit)));
+      faces.push_back(f);
+      points.push_back(face.random_point(rng, unit));
     }
   }
 
@@ -132,28 +135,33 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
     trees_->adaptors[t].items = &sites_[t];
     trees_->trees[t] = std::make_unique<Tree>(3, trees_->adaptors[t], nanoflann::KDTreeSingleIndexAdaptorParams(16));
   }
-  group_patch_samples(mesh);
+  file_patch_samples(mesh, strata, faces, points);
 }
 
 BoundarySamples::~BoundarySamples() = default;
 
-// Orders the patch samples by face and files them in small groups of one face each.
-void BoundarySamples::group_patch_samples(const SurfaceMesh& mesh) {
-  auto& patch = sites_[static_cast<int>(StratumType::Patch)];
-  std::stable_sort(patch.begin(), patch.end(), [](const SurfaceSite& a, const SurfaceSite& b) { return a.element < b.element; });
+// Orders the patch samples by face (keeping their order within a face) and files them in small
+// groups of one face each.
+void BoundarySamples::file_patch_samples(const SurfaceMesh& mesh, const Strata& strata, const std::vector<Index>& faces,
+                                         const std::vector<Point>& points) {
+  std::vector<std::uint32_t> first(mesh.num_faces() + 1, 0);
+  for (Index f : faces) ++first[f + 1];
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) first[f + 1] += first[f];
+  patch_points_.resize(points.size());
+  std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+  for (std::size_t k = 0; k < points.size(); ++k) patch_points_[next[faces[k]]++] = points[k];
   std::vector<geometry::Box> boxes;
-  for (std::uint32_t begin = 0, end = 0; begin < patch.size(); begin = end) {
-    while (end < patch.size() && patch[end].element == patch[begin].element) ++end;
-    group_face(patch, patch[begin].element, begin, end, trees_->groups, boxes);
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    if (first[f] < first[f + 1]) group_face(patch_points_, f, first[f], first[f + 1], trees_->groups, boxes);
   }
   std::vector<std::uint32_t> items(trees_->groups.size());
   for (std::uint32_t i = 0; i < items.size(); ++i) items[i] = i;
   trees_->group_tree = std::make_unique<geometry::BoxTree>(std::move(boxes), std::move(items));
-  trees_->face_points.reserve(mesh.num_faces());
-  for (const Triangle& t : mesh.triangles) trees_->face_points.push_back(mesh.vertices[t[0]]);
+  trees_->face_sites.reserve(mesh.num_faces());
+  for (Index f = 0; f < mesh.num_faces(); ++f) trees_->face_sites.push_back(patch_site(strata, f, mesh.vertices[mesh.triangles[f][0]]));
 }
 
-std::size_t BoundarySamples::size() const { return sites_[0].size() + sites_[1].size() + sites_[2].size(); }
+std::size_t BoundarySamples::size() const { return sites_[0].size() + sites_[1].size() + patch_points_.size(); }
 
 double BoundarySamples::distance_to_non_cosmooth(const SurfaceSite& center, const CoSmoothness& cosmooth,
                                                  double limit) const {
@@ -182,16 +190,17 @@ void BoundarySamples::nearest_non_cosmooth_patch_sample(const SurfaceSite& cente
   geometry::Box query;
   query.include(Point(p.array() - search));
   query.include(Point(p.array() + search));
-  const auto& sites = sites_[static_cast<int>(StratumType::Patch)];
   trees_->group_tree->for_each_overlap(query, [&](std::uint32_t g) {
     const SampleGroup& group = trees_->groups[g];
     const geometry::Box& box = trees_->group_tree->box(g);
-    const double reach = cosmooth.non_cosmooth_reach(center, group.face, trees_->face_points[group.face]);
+    SurfaceSite x = trees_->face_sites[group.face];
+    const double reach = cosmooth.non_cosmooth_reach(center, group.face, x.position);
     const double gap2 = (p - p.cwiseMax(box.lo).cwiseMin(box.hi)).squaredNorm();
     if (!(gap2 < best) || !(gap2 < reach * reach)) return;
     for (std::uint32_t i = group.begin; i < group.end; ++i) {
-      const double d2 = (sites[i].position - p).squaredNorm();
-      if (d2 < best && !cosmooth(center, sites[i])) best = d2;
+      x.position = patch_points_[i];
+      const double d2 = (x.position - p).squaredNorm();
+      if (d2 < best && !cosmooth(center, x)) best = d2;
     }
   });
 }

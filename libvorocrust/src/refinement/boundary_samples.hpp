@@ -35,15 +35,16 @@ class BoundarySamples {
                                   double limit = std::numeric_limits<double>::infinity()) const;
 
   std::size_t size() const;
-  const std::vector<SurfaceSite>& samples(StratumType type) const { return sites_[static_cast<int>(type)]; }
 
  private:
-  void group_patch_samples(const SurfaceMesh& mesh);
+  void file_patch_samples(const SurfaceMesh& mesh, const Strata& strata, const std::vector<Index>& faces,
+                          const std::vector<Point>& points);
   // Lowers `best` (a squared distance) to that of the nearest patch sample not co-smooth with center.
   void nearest_non_cosmooth_patch_sample(const SurfaceSite& center, const CoSmoothness& cosmooth, double& best) const;
 
   struct Trees;
-  std::vector<SurfaceSite> sites_[3];
+  std::vector<SurfaceSite> sites_[2];  // corner and crease samples
+  std::vector<Point> patch_points_;    // patch samples, by face (their sites differ only in position)
   std::unique_ptr<Trees> trees_;
 };
 
