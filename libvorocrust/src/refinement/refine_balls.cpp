@@ -47,6 +47,24 @@ struct Shrink {
   double radius;
 };
 
+// A ball that reaches a piece of the pool, as the tests of the piece's children need it.
+struct Candidate {
+  Point centre;
+  double radius;
+  double limit;              // within this distance it covers for the phase (0: it cannot)
+  std::uint32_t ball;
+  bool cosmooth_everywhere;  // every point of the piece is co-smooth with it
+};
+
+// Whether some point of the piece lies strictly within `distance` of `centre`: a corner often
+// shows it before the nearest point is worked out.
+bool reaches_within(const Subface& s, const Point& centre, double distance) {
+  for (int k = 0; k < s.corner_count(); ++k) {
+    if ((s.corner(k) - centre).squaredNorm() < distance * distance) return true;
+  }
+  return (s.closest_point(centre) - centre).squaredNorm() < distance * distance;
+}
+
 // Where shrunk balls gave up cover, as boxes: a piece of an element that lost cover needs
 // sampling only where it meets one of them.
 class LostRegions {
@@ -122,9 +140,10 @@ class BallRefinement::Impl {
   void shrink_neighbours_for_lipschitz(std::uint32_t ball);
   // Balls of every type that reach the subface; a child's are among its parent's.
   void reaching(const Subface& s, std::vector<std::uint32_t>& out) const;
-  bool covers(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates,
-              std::vector<CoverBall>& cover) const;
-  void find_violations(const Subface& s, const std::vector<std::uint32_t>& candidates, std::vector<Shrink>& out) const;
+  void classify(StratumType type, const Subface& s, const std::vector<std::uint32_t>& reaching,
+                std::vector<Candidate>& out) const;
+  bool covers(const Subface& s, const std::vector<Candidate>& candidates, std::vector<CoverBall>& cover) const;
+  void find_violations(const Subface& s, const std::vector<Candidate>& candidates, std::vector<Shrink>& out) const;
   SurfaceSite site_on(const Subface& s, const Point& p) const;
   std::vector<Subface> initial_pool(StratumType type);
   void throw_darts(StratumType type, const std::vector<Subface>& pool, std::string_view phase);
@@ -294,27 +313,41 @@ void BallRefinement::Impl::reaching(const Subface& s, std::vector<std::uint32_t>
   for (int t = 0; t < 3; ++t) balls_.reaching(static_cast<StratumType>(t), centroid, reach, out);
 }
 
+// What each ball reaching a piece can do for the piece's children, worked out once for all four:
+// the radius within which it covers for the phase, and whether every point of the piece is
+// co-smooth with it (on a patch face, the points beyond the face's non-co-smooth reach are).
+void BallRefinement::Impl::classify(StratumType type, const Subface& s, const std::vector<std::uint32_t>& reaching,
+                                    std::vector<Candidate>& out) const {
+  const Point centroid = s.centroid();
+  const double reach = s.circumradius(centroid);
+  out.clear();
+  for (std::uint32_t b : reaching) {
+    const RefinedBall& ball = balls_[b];
+    const double gap = (ball.site.position - centroid).norm() - reach;  // to the piece, at least
+    const bool everywhere = !s.is_segment() && gap >= cosmooth_.non_cosmooth_reach(ball.site, s.element, s.corner(0));
+    const double limit = ball.site.type > type ? 0 : covering_radius(type, ball.site.type, ball.radius, deep_);
+    out.push_back({ball.site.position, ball.radius, limit, b, everywhere});
+  }
+}
+
 // A subface leaves the pool once it is covered: by balls of a lower type (whose inside is kept
 // from higher phases) or deeply by balls of its own type, every ball co-smooth with it. One ball
 // is tried first; then their union, which spares splitting the fringe where balls meet down to
 // pieces that fit in one. Balls are first judged by the sphere around the piece.
-bool BallRefinement::Impl::covers(StratumType type, const Subface& s, const std::vector<std::uint32_t>& candidates,
+bool BallRefinement::Impl::covers(const Subface& s, const std::vector<Candidate>& candidates,
                                   std::vector<CoverBall>& cover) const {
   const Point centroid = s.centroid();
   const double reach = s.circumradius(centroid);
   const SurfaceSite site = site_on(s, centroid);
   cover.clear();
-  for (std::uint32_t b : candidates) {
-    const RefinedBall& ball = balls_[b];
-    if (ball.site.type > type) continue;
-    const double limit = covering_radius(type, ball.site.type, ball.radius, deep_);
-    const double d = (ball.site.position - centroid).norm();
-    if (d - reach >= limit) continue;  // the piece lies beyond it
-    const bool holds_all = d + reach < limit;
-    if (!holds_all && !((s.closest_point(ball.site.position) - ball.site.position).norm() < limit)) continue;
-    if (!cosmooth_(ball.site, site)) continue;
+  for (const Candidate& c : candidates) {
+    const double d2 = (c.centre - centroid).squaredNorm();
+    if (d2 >= (c.limit + reach) * (c.limit + reach)) continue;  // the piece lies beyond it
+    const bool holds_all = c.limit > reach && d2 < (c.limit - reach) * (c.limit - reach);
+    if (!holds_all && !reaches_within(s, c.centre, c.limit)) continue;
+    if (!c.cosmooth_everywhere && !cosmooth_(balls_[c.ball].site, site)) continue;
     if (holds_all) return true;
-    cover.push_back({ball.site.position, limit});
+    cover.push_back({c.centre, c.limit});
   }
   for (const CoverBall& c : cover) {
     bool all = true;
@@ -327,13 +360,18 @@ bool BallRefinement::Impl::covers(StratumType type, const Subface& s, const std:
 
 // Paper 2.3 "Detecting Violations": every ball reaching the subface must be co-smooth with it,
 // checked at the point of the subface nearest to the centre and at the corners it contains.
-void BallRefinement::Impl::find_violations(const Subface& s, const std::vector<std::uint32_t>& candidates,
+void BallRefinement::Impl::find_violations(const Subface& s, const std::vector<Candidate>& candidates,
                                            std::vector<Shrink>& out) const {
   const Point centroid = s.centroid();
   const double reach = s.circumradius(centroid);
-  for (std::uint32_t b : candidates) {
+  for (const Candidate& c : candidates) {
+    if (c.cosmooth_everywhere) continue;
+    const std::uint32_t b = c.ball;
     const RefinedBall& ball = balls_[b];
-    if ((ball.site.position - centroid).norm() - reach >= ball.radius) continue;
+    const double gap = (ball.site.position - centroid).norm() - reach;  // to the piece, at least
+    if (gap >= ball.radius) continue;
+    // On a patch face, points beyond the face's non-co-smooth reach all are co-smooth.
+    if (!s.is_segment() && gap >= cosmooth_.non_cosmooth_reach(ball.site, s.element, s.corner(0))) continue;
     const Point q = s.closest_point(ball.site.position);
     const double d = (q - ball.site.position).norm();
     if (!(d < ball.radius)) continue;
@@ -409,16 +447,18 @@ std::vector<Subface> BallRefinement::Impl::subdivide(StratumType type, const std
   };
   std::vector<Outcome> outcomes(pool.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pool.size(), 256), [&](const auto& range) {
-    std::vector<std::uint32_t> candidates;
+    std::vector<std::uint32_t> found;
+    std::vector<Candidate> candidates;
     std::vector<CoverBall> cover;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      reaching(pool[i], candidates);
+      reaching(pool[i], found);
+      classify(type, pool[i], found, candidates);
       const auto children = pool[i].split();
       for (std::size_t k = 0; k < children.size(); ++k) {
         const Subface& child = children[k];
         if (last_level || !(child.measure() > 0) || !lost.meets(child)) continue;  // below any meaningful size
         const std::size_t found = outcomes[i].violations.size();
-        if (covers(type, child, candidates, cover)) {
+        if (covers(child, candidates, cover)) {
           find_violations(child, candidates, outcomes[i].violations);
           if (outcomes[i].violations.size() == found) continue;
         }
