@@ -123,7 +123,7 @@ class BallRefinement::Impl {
 
   void run();
   const BallIndex& balls() const { return balls_; }
-  void shrink_for_slivers(std::uint32_t ball, double radius) { shrink(ball, radius, stats_.sliver_shrinks); }
+  void shrink_for_slivers(std::uint32_t ball, double radius) { shrink(ball, radius, Reason::Sliver); }
   void relax_deep_coverage() { deep_ = 1 - kAlpha / 2; }
 
  private:
@@ -152,7 +152,8 @@ class BallRefinement::Impl {
   void check_pool_size(const std::vector<Subface>& pool, int depth) const;
 
   // --- shrinking ------------------------------------------------------------------------------
-  void shrink(std::uint32_t ball, double radius, std::size_t& counter);
+  enum class Reason { C1, C3, Sliver };  // C1 also stands for C2
+  void shrink(std::uint32_t ball, double radius, Reason why);
   void mark_dirty(const Point& centre, double radius, StratumType type);
   void build_element_trees();
   void report(std::string_view phase, double fraction);
@@ -179,6 +180,7 @@ class BallRefinement::Impl {
   // apart: each phase consumes its own, so a crease pass cannot take the patches' regions.
   std::vector<geometry::Box> lost_edges_, lost_faces_;
   std::vector<bool> corner_placed_;
+  std::vector<std::uint32_t> unsettled_[3];  // per stratum type: balls that may break C3 (enforce_lipschitz)
   int lowest_shrunk_ = 3;
   int restart_phase_ = 0;  // where the next run() starts: the lowest type shrunk since the last
   double deep_ = kDeep;    // C4: coverage must be this deep (1 - alpha)
@@ -228,12 +230,13 @@ void BallRefinement::Impl::mark_dirty(const Point& centre, double radius, Stratu
   lost_faces_.push_back(query);
 }
 
-void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, std::size_t& counter) {
+void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, Reason why) {
   const RefinedBall& b = balls_[ball];
   if (!(radius < b.radius)) return;
   const double old_radius = b.radius;
   balls_.shrink(ball, radius);
-  ++counter;
+  ++(why == Reason::C1 ? stats_.c1_shrinks : why == Reason::C3 ? stats_.c3_shrinks : stats_.sliver_shrinks);
+  if (why != Reason::C3) unsettled_[static_cast<int>(b.site.type)].push_back(ball);
   lowest_shrunk_ = std::min(lowest_shrunk_, static_cast<int>(b.site.type));
   restart_phase_ = std::min(restart_phase_, static_cast<int>(b.site.type));
   mark_dirty(b.site.position, old_radius, b.site.type);
@@ -257,7 +260,7 @@ void BallRefinement::Impl::shrink_neighbours_for_lipschitz(std::uint32_t ball) {
   scratch_.clear();
   balls_.lipschitz_violators(p.site.type, p.site.position, p.radius, L, scratch_);
   for (std::uint32_t q : scratch_) {
-    shrink(q, p.radius + L * (balls_[q].site.position - p.site.position).norm(), stats_.c3_shrinks);
+    shrink(q, p.radius + L * (balls_[q].site.position - p.site.position).norm(), Reason::C3);
   }
 }
 
@@ -273,7 +276,7 @@ bool BallRefinement::Impl::covered(StratumType type, const SurfaceSite& site) {
       const RefinedBall& ball = balls_[b];
       const double d = (ball.site.position - site.position).norm();
       if (!cosmooth_(ball.site, site)) {
-        shrink(b, kSeparation * d, stats_.c1_shrinks);
+        shrink(b, kSeparation * d, Reason::C1);
         continue;
       }
       if (d <= covering_radius(type, ball.site.type, ball.radius, deep_)) result = true;
@@ -391,7 +394,7 @@ void BallRefinement::Impl::protect_corners() {
     const double bound = sizing_(site.position);
     double r = std::min(bound, kSeparation * boundary_.distance_to_non_cosmooth(site, cosmooth_, bound / kSeparation));
     if (!std::isfinite(r)) r = std::numeric_limits<double>::max();  // a lone corner with nothing near
-    balls_.add(site, r);
+    unsettled_[static_cast<int>(StratumType::Corner)].push_back(balls_.add(site, r));
     corner_placed_[c] = true;
   }
 }
@@ -469,7 +472,7 @@ std::vector<Subface> BallRefinement::Impl::subdivide(StratumType type, const std
   std::vector<Subface> next;
   next.reserve(pool.size() * 2);
   for (std::size_t i = 0; i < pool.size(); ++i) {
-    for (const Shrink& v : outcomes[i].violations) shrink(v.ball, v.radius, stats_.c1_shrinks);
+    for (const Shrink& v : outcomes[i].violations) shrink(v.ball, v.radius, Reason::C1);
     if (outcomes[i].kept == 0) continue;
     const auto children = pool[i].split();
     for (std::size_t k = 0; k < children.size(); ++k) {
@@ -518,35 +521,27 @@ void BallRefinement::Impl::sample(StratumType type) {
   }
 }
 
-// C3 within one stratum type. The lower envelope r'_p = min_q (r_q + L |p - q|) over the type's
-// balls is itself L-Lipschitz (the distance obeys the triangle inequality), so one pass computed
-// from the old radii suffices; it runs in parallel and is independent of the thread count.
+// C3 within one stratum type. New patch and crease balls keep it (initial_radius and
+// shrink_neighbours_for_lipschitz), and shrinking for C3 keeps it too; only corner balls, placed
+// without it, and balls shrunk for other reasons can break it. Each such ball p, in turn, shrinks
+// to the bound the others set, min_q (r_q + L |p - q|), and then shrinks the balls it makes too
+// large to r_p + L |p - q|, which is L-Lipschitz in q: no ball needs to shrink twice for p.
 void BallRefinement::Impl::enforce_lipschitz(StratumType type) {
   const auto start = Clock::now();
-  const double L = options_.lipschitz;
-  std::vector<std::uint32_t> ids;
-  for (std::uint32_t b = 0; b < balls_.size(); ++b) {
-    if (balls_[b].site.type == type) ids.push_back(b);
+  std::vector<std::uint32_t> unsettled = std::move(unsettled_[static_cast<int>(type)]);
+  unsettled_[static_cast<int>(type)].clear();
+  std::sort(unsettled.begin(), unsettled.end());
+  unsettled.erase(std::unique(unsettled.begin(), unsettled.end()), unsettled.end());
+  for (std::uint32_t p : unsettled) {
+    shrink(p, balls_.lipschitz_bound(type, balls_[p].site.position, options_.lipschitz), Reason::C3);
+    shrink_neighbours_for_lipschitz(p);
   }
-  std::vector<double> target(ids.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ids.size(), 64), [&](const auto& range) {
-    std::vector<std::uint32_t> near;
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      const RefinedBall& p = balls_[ids[i]];
-      double r = p.radius;
-      near.clear();
-      balls_.centres_within(type, p.site.position, r / L, near);
-      for (std::uint32_t q : near) r = std::min(r, balls_[q].radius + L * (balls_[q].site.position - p.site.position).norm());
-      target[i] = r;
-    }
-  });
-  for (std::size_t i = 0; i < ids.size(); ++i) shrink(ids[i], target[i], stats_.c3_shrinks);
   stats_.c3_seconds += seconds_since(start);
 }
 
 // C1 and C2 over dense samples: a ball holding a sample it is not co-smooth with shrinks to
-// 0.49 of the distance to the nearest such sample; two overlapping balls neither of which is co-smooth with the other's
-// centre both shrink apart.
+// 0.49 of the distance to the nearest such sample; two overlapping balls neither of which is
+// co-smooth with the other's centre both shrink apart.
 bool BallRefinement::Impl::sweep() {
   const auto start = Clock::now();
   const std::size_t n = balls_.size();
@@ -571,7 +566,7 @@ bool BallRefinement::Impl::sweep() {
     }
   });
   const std::size_t before = stats_.c1_shrinks;
-  for (std::uint32_t b = 0; b < n; ++b) shrink(b, target[b], stats_.c1_shrinks);
+  for (std::uint32_t b = 0; b < n; ++b) shrink(b, target[b], Reason::C1);
   stats_.sweep_seconds += seconds_since(start);
   return stats_.c1_shrinks != before;
 }
