@@ -6,7 +6,6 @@
 #include <random>
 
 #include "geometry/box_tree.hpp"
-#include "geometry/surface_sampling.hpp"
 #include "refinement/point_cloud.hpp"
 #include "refinement/subface.hpp"
 
@@ -19,6 +18,15 @@ struct SitePosition {
 };
 using Adaptor = PointCloudAdaptor<SurfaceSite, SitePosition>;
 using Tree = StaticKdTree<Adaptor>;
+
+// How many of `total` random samples an element with this share of the measure gets: its
+// expected number, rounded up or down at random so that the expectation stays exact. Random
+// points in proportion to measure, stratified by element.
+std::size_t share_of(double total, double share, std::mt19937_64& rng, std::uniform_real_distribution<double>& unit) {
+  const double expected = total * share;
+  const double whole = std::floor(expected);
+  return static_cast<std::size_t>(whole) + (unit(rng) < expected - whole ? 1 : 0);
+}
 
 }  // namespace
 
@@ -69,11 +77,20 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
     : trees_(std::make_unique<Trees>()) {
   std::mt19937_64 rng(seed ^ 0x5eed0fb0da41ull);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-
   auto& corners = sites_[static_cast<int>(StratumType::Corner)];
   for (Index c = 0; c < strata.corners.size(); ++c) corners.push_back(corner_site(strata, mesh, c));
+  add_crease_samples(mesh, strata, counts, rng, unit);
+  for (int t = 0; t < 2; ++t) {
+    trees_->adaptors[t].items = &sites_[t];
+    trees_->trees[t] = std::make_unique<Tree>(3, trees_->adaptors[t], nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  }
+  add_patch_samples(mesh, strata, counts, rng, unit);
+}
 
-  // Creases: every edge's midpoint and quarter points, then random points by length.
+// Every crease edge's midpoint and quarter points, every non-corner vertex on a crease, then
+// random points by length.
+void BoundarySamples::add_crease_samples(const SurfaceMesh& mesh, const Strata& strata, const BoundarySampleCounts& counts,
+                                         std::mt19937_64& rng, std::uniform_real_distribution<double>& unit) {
   auto& crease = sites_[static_cast<int>(StratumType::Crease)];
   const auto crease_point = [&](Index e, double t) {
     const auto [a, b] = strata.topology.edges[e];
@@ -81,85 +98,63 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
   };
   std::vector<Index> crease_edges;
   std::vector<double> lengths;
+  double total_length = 0;
   for (Index e = 0; e < strata.topology.num_edges(); ++e) {
     if (strata.edge_crease[e] == Strata::kNone) continue;
     crease_edges.push_back(e);
     const auto [a, b] = strata.topology.edges[e];
-    lengths.push_back((mesh.vertices[b] - mesh.vertices[a]).norm());
+    total_length += lengths.emplace_back((mesh.vertices[b] - mesh.vertices[a]).norm());
     for (double t : {0.125, 0.5, 0.875}) crease_point(e, t);
   }
-  // Non-corner vertices on creases belong to the crease.
   for (const Crease& c : strata.creases) {
     for (std::size_t i = 0; i < c.vertices.size(); ++i) {
       if (strata.vertex_corner[c.vertices[i]] != Strata::kNone) continue;
       crease.push_back(crease_site(strata, c.edges[i < c.edges.size() ? i : i - 1], mesh.vertices[c.vertices[i]]));
     }
   }
-  if (!crease_edges.empty()) {
-    const geometry::WeightedPick pick(lengths);
-    const std::size_t n = std::clamp(counts.crease_per_edge * crease_edges.size(), counts.crease_min, counts.crease_max);
-    for (std::size_t k = 0; k < n; ++k) {
-      const Index e = crease_edges[pick(unit(rng))];
-      crease_point(e, unit(rng));
-    }
+  if (!(total_length > 0)) return;
+  const auto n = static_cast<double>(
+      std::clamp(counts.crease_per_edge * crease_edges.size(), counts.crease_min, counts.crease_max));
+  for (std::size_t k = 0; k < crease_edges.size(); ++k) {
+    for (std::size_t i = share_of(n, lengths[k] / total_length, rng, unit); i > 0; --i) crease_point(crease_edges[k], unit(rng));
   }
-
-  // Patches: every face's centroid and points near its corners, then random points by area.
-  std::vector<Index> faces;
-  std::vector<Point> points;
-  std::vector<double> areas(mesh.num_faces());
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
-    const Point& a = mesh.vertices[mesh.triangles[f][0]];
-    const Point& b = mesh.vertices[mesh.triangles[f][1]];
-    const Point& c = mesh.vertices[mesh.triangles[f][2]];
-    areas[f] = 0.5 * (b - a).cross(c - a).norm();
-    for (const Point& p : {Point((a + b + c) / 3), Point(0.9 * a + 0.05 * b + 0.05 * c),
-                           Point(0.05 * a + 0.9 * b + 0.05 * c), Point(0.05 * a + 0.05 * b + 0.9 * c)}) {
-      faces.push_back(f);
-      points.push_back(p);
-    }
-  }
-  if (mesh.num_faces() > 0) {
-    const geometry::WeightedPick pick(areas);
-    const std::size_t n = std::clamp(counts.patch_per_face * mesh.num_faces(), counts.patch_min, counts.patch_max);
-    for (std::size_t k = 0; k < n; ++k) {
-      const Index f = static_cast<Index>(pick(unit(rng)));
-      const Triangle& t = mesh.triangles[f];
-      const Subface face = Subface::triangle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], f);
-      faces.push_back(f);
-      points.push_back(face.random_point(rng, unit));
-    }
-  }
-
-  for (int t = 0; t < 2; ++t) {
-    trees_->adaptors[t].items = &sites_[t];
-    trees_->trees[t] = std::make_unique<Tree>(3, trees_->adaptors[t], nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  }
-  file_patch_samples(mesh, strata, faces, points);
 }
 
-BoundarySamples::~BoundarySamples() = default;
-
-// Orders the patch samples by face (keeping their order within a face) and files them in small
-// groups of one face each.
-void BoundarySamples::file_patch_samples(const SurfaceMesh& mesh, const Strata& strata, const std::vector<Index>& faces,
-                                         const std::vector<Point>& points) {
-  std::vector<std::uint32_t> first(mesh.num_faces() + 1, 0);
-  for (Index f : faces) ++first[f + 1];
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f) first[f + 1] += first[f];
-  patch_points_.resize(points.size());
-  std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-  for (std::size_t k = 0; k < points.size(); ++k) patch_points_[next[faces[k]]++] = points[k];
+// Every face's centroid and points near its corners, then random points by area; filed by face
+// in small groups as they are made.
+void BoundarySamples::add_patch_samples(const SurfaceMesh& mesh, const Strata& strata, const BoundarySampleCounts& counts,
+                                        std::mt19937_64& rng, std::uniform_real_distribution<double>& unit) {
+  std::vector<double> areas(mesh.num_faces());
+  double total_area = 0;
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    total_area += areas[f] = 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+  }
+  const auto n = static_cast<double>(std::clamp(counts.patch_per_face * mesh.num_faces(), counts.patch_min, counts.patch_max));
   std::vector<geometry::Box> boxes;
   for (Index f = 0; f < mesh.num_faces(); ++f) {
-    if (first[f] < first[f + 1]) group_face(patch_points_, f, first[f], first[f + 1], trees_->groups, boxes);
+    const Triangle& t = mesh.triangles[f];
+    const Point &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const auto begin = static_cast<std::uint32_t>(patch_points_.size());
+    for (const Point& p : {Point((a + b + c) / 3), Point(0.9 * a + 0.05 * b + 0.05 * c),
+                           Point(0.05 * a + 0.9 * b + 0.05 * c), Point(0.05 * a + 0.05 * b + 0.9 * c)}) {
+      patch_points_.push_back(p);
+    }
+    if (total_area > 0) {
+      const Subface face = Subface::triangle(a, b, c, f);
+      for (std::size_t i = share_of(n, areas[f] / total_area, rng, unit); i > 0; --i) {
+        patch_points_.push_back(face.random_point(rng, unit));
+      }
+    }
+    group_face(patch_points_, f, begin, static_cast<std::uint32_t>(patch_points_.size()), trees_->groups, boxes);
+    trees_->face_sites.push_back(patch_site(strata, f, a));
   }
   std::vector<std::uint32_t> items(trees_->groups.size());
   for (std::uint32_t i = 0; i < items.size(); ++i) items[i] = i;
   trees_->group_tree = std::make_unique<geometry::BoxTree>(std::move(boxes), std::move(items));
-  trees_->face_sites.reserve(mesh.num_faces());
-  for (Index f = 0; f < mesh.num_faces(); ++f) trees_->face_sites.push_back(patch_site(strata, f, mesh.vertices[mesh.triangles[f][0]]));
 }
+
+BoundarySamples::~BoundarySamples() = default;
 
 std::size_t BoundarySamples::size() const { return sites_[0].size() + sites_[1].size() + patch_points_.size(); }
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <random>
 #include <vector>
 
 #include "refinement/surface_site.hpp"
@@ -37,8 +38,10 @@ class BoundarySamples {
   std::size_t size() const;
 
  private:
-  void file_patch_samples(const SurfaceMesh& mesh, const Strata& strata, const std::vector<Index>& faces,
-                          const std::vector<Point>& points);
+  void add_crease_samples(const SurfaceMesh& mesh, const Strata& strata, const BoundarySampleCounts& counts,
+                          std::mt19937_64& rng, std::uniform_real_distribution<double>& unit);
+  void add_patch_samples(const SurfaceMesh& mesh, const Strata& strata, const BoundarySampleCounts& counts,
+                         std::mt19937_64& rng, std::uniform_real_distribution<double>& unit);
   // Lowers `best` (a squared distance) to that of the nearest patch sample not co-smooth with center.
   void nearest_non_cosmooth_patch_sample(const SurfaceSite& center, const CoSmoothness& cosmooth, double& best) const;
 
