@@ -29,7 +29,8 @@ class BallIndex::Tree {
     std::uint32_t ball;
   };
   // Calls visit(sphere) for every sphere in the subtrees that keep(squared distance from p to
-  // the subtree's box of centres, largest radius in it) accepts; nearer subtrees first.
+  // the subtree's box of centres, largest radius in it, newest ball in it) accepts; nearer
+  // subtrees first.
   template <class Keep, class Visit>
   void search(const Point& p, Keep&& keep, Visit&& visit) const {
     if (!nodes_.empty()) search(0, p, keep, visit);
@@ -41,20 +42,22 @@ class BallIndex::Tree {
     Point lo = Point::Constant(std::numeric_limits<double>::infinity());
     Point hi = Point::Constant(-std::numeric_limits<double>::infinity());
     double max_radius = 0;
-    int axis = -1;  // -1 for a leaf
+    std::uint32_t newest = 0;  // the largest ball index below: balls are numbered as they come
+    int axis = -1;             // -1 for a leaf
     double split = 0;
     std::uint32_t child = 0;  // inner node: its children are child and child + 1; leaf: its index in leaves_
-    void include(const Point& centre, double radius) {
+    void include(const Point& centre, double radius, std::uint32_t ball) {
       lo = lo.cwiseMin(centre);
       hi = hi.cwiseMax(centre);
       max_radius = std::max(max_radius, radius);
+      newest = std::max(newest, ball);
     }
   };
 
   template <class Keep, class Visit>
   void search(std::uint32_t index, const Point& p, Keep& keep, Visit& visit) const {
     const Node& node = nodes_[index];
-    if (!keep((p - p.cwiseMax(node.lo).cwiseMin(node.hi)).squaredNorm(), node.max_radius)) return;
+    if (!keep((p - p.cwiseMax(node.lo).cwiseMin(node.hi)).squaredNorm(), node.max_radius, node.newest)) return;
     if (node.axis < 0) {
       for (const Sphere& s : leaves_[node.child]) visit(s);
       return;
@@ -82,7 +85,7 @@ void BallIndex::Tree::insert(const Point& centre, double radius, std::uint32_t b
   std::uint32_t index = 0;
   for (;;) {
     Node& node = nodes_[index];
-    node.include(centre, radius);
+    node.include(centre, radius, ball);
     if (node.axis < 0) break;
     index = node.child + (centre[node.axis] < node.split ? 0 : 1);
   }
@@ -111,7 +114,7 @@ void BallIndex::Tree::split(std::uint32_t index) {
   leaves_.emplace_back();
   for (const Sphere& s : spheres) {
     Node& side = nodes_[child + (s.centre[axis] < split ? 0 : 1)];
-    side.include(s.centre, s.radius);
+    side.include(s.centre, s.radius, s.ball);
     place(side.child, s);
   }
   Node& node = nodes_[index];
@@ -139,7 +142,7 @@ void BallIndex::shrink(std::uint32_t i, double radius) {
 double BallIndex::lipschitz_bound(StratumType type, const Point& p, double L) const {
   double best = std::numeric_limits<double>::infinity();
   trees_[static_cast<int>(type)].search(
-      p, [&](double d2, double) { return L * L * d2 < best * best; },
+      p, [&](double d2, double, std::uint32_t) { return L * L * d2 < best * best; },
       [&](const Tree::Sphere& s) { best = std::min(best, s.radius + L * (s.centre - p).norm()); });
   return best;
 }
@@ -147,17 +150,21 @@ double BallIndex::lipschitz_bound(StratumType type, const Point& p, double L) co
 void BallIndex::centres_within(StratumType type, const Point& p, double distance, std::vector<std::uint32_t>& out) const {
   const double limit = distance * distance;
   trees_[static_cast<int>(type)].search(
-      p, [&](double d2, double) { return d2 < limit; },
+      p, [&](double d2, double, std::uint32_t) { return d2 < limit; },
       [&](const Tree::Sphere& s) {
         if ((s.centre - p).squaredNorm() < limit) out.push_back(s.ball);
       });
 }
 
-void BallIndex::reaching(StratumType type, const Point& p, double margin, std::vector<std::uint32_t>& out) const {
+void BallIndex::reaching(StratumType type, const Point& p, double margin, std::vector<std::uint32_t>& out,
+                         std::uint32_t first) const {
   trees_[static_cast<int>(type)].search(
-      p, [&](double d2, double max_radius) { return d2 < (max_radius + margin) * (max_radius + margin); },
+      p,
+      [&](double d2, double max_radius, std::uint32_t newest) {
+        return newest >= first && d2 < (max_radius + margin) * (max_radius + margin);
+      },
       [&](const Tree::Sphere& s) {
-        if ((s.centre - p).squaredNorm() < (s.radius + margin) * (s.radius + margin)) out.push_back(s.ball);
+        if (s.ball >= first && (s.centre - p).squaredNorm() < (s.radius + margin) * (s.radius + margin)) out.push_back(s.ball);
       });
 }
 
@@ -165,7 +172,10 @@ void BallIndex::lipschitz_violators(StratumType type, const Point& p, double rad
                                     std::vector<std::uint32_t>& out) const {
   // A subtree can hold a violator only if its largest radius exceeds radius + L * (its distance).
   trees_[static_cast<int>(type)].search(
-      p, [&](double d2, double max_radius) { return max_radius > radius && L * L * d2 < (max_radius - radius) * (max_radius - radius); },
+      p,
+      [&](double d2, double max_radius, std::uint32_t) {
+        return max_radius > radius && L * L * d2 < (max_radius - radius) * (max_radius - radius);
+      },
       [&](const Tree::Sphere& s) {
         if (s.radius > radius + L * (s.centre - p).norm()) out.push_back(s.ball);
       });

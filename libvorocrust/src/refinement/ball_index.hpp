@@ -32,8 +32,9 @@ class BallIndex {
   // Balls of `type` with centres strictly within `distance` of `p` (appended to `out`).
   void centres_within(StratumType type, const Point& p, double distance, std::vector<std::uint32_t>& out) const;
   // Balls of `type` that reach within `margin` of `p` (|p - centre| < radius + margin); with
-  // margin 0, the balls containing p (A.4).
-  void reaching(StratumType type, const Point& p, double margin, std::vector<std::uint32_t>& out) const;
+  // margin 0, the balls containing p (A.4). Only balls numbered `first` or later, if given.
+  void reaching(StratumType type, const Point& p, double margin, std::vector<std::uint32_t>& out,
+                std::uint32_t first = 0) const;
   // Balls of `type` too large beside a ball (p, radius) for C3: r_q > radius + L |p - q|.
   void lipschitz_violators(StratumType type, const Point& p, double radius, double L,
                            std::vector<std::uint32_t>& out) const;

@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -64,6 +65,15 @@ bool reaches_within(const Subface& s, const Point& centre, double distance) {
   }
   return (s.closest_point(centre) - centre).squaredNorm() < distance * distance;
 }
+
+// The active pool (paper 2.3): pieces, each with the balls that reached it when it was made (a
+// child's are among its parent's), except those numbered `known` or later, which came since.
+struct Pool {
+  std::vector<Subface> pieces;
+  std::vector<std::uint32_t> first{0};  // piece i's balls are reaching[first[i], first[i + 1])
+  std::vector<std::uint32_t> reaching;
+  std::uint32_t known = 0;
+};
 
 // Where shrunk balls gave up cover, as boxes: a piece of an element that lost cover needs
 // sampling only where it meets one of them.
@@ -138,17 +148,16 @@ class BallRefinement::Impl {
   bool covered(StratumType type, const SurfaceSite& site);
   double initial_radius(const SurfaceSite& site);
   void shrink_neighbours_for_lipschitz(std::uint32_t ball);
-  // Balls of every type that reach the subface; a child's are among its parent's.
-  void reaching(const Subface& s, std::vector<std::uint32_t>& out) const;
+  // Balls of every type that reach piece i of the pool.
+  void reaching(const Pool& pool, std::size_t i, std::vector<std::uint32_t>& out) const;
   void classify(StratumType type, const Subface& s, const std::vector<std::uint32_t>& reaching,
                 std::vector<Candidate>& out) const;
   bool covers(const Subface& s, const std::vector<Candidate>& candidates, std::vector<CoverBall>& cover) const;
   void find_violations(const Subface& s, const std::vector<Candidate>& candidates, std::vector<Shrink>& out) const;
   SurfaceSite site_on(const Subface& s, const Point& p) const;
-  std::vector<Subface> initial_pool(StratumType type);
+  Pool initial_pool(StratumType type);
   void throw_darts(StratumType type, const std::vector<Subface>& pool, std::string_view phase);
-  std::vector<Subface> subdivide(StratumType type, const std::vector<Subface>& pool, bool last_level,
-                                 const LostRegions& lost);
+  Pool subdivide(StratumType type, const Pool& pool, bool last_level, const LostRegions& lost);
   void check_pool_size(const std::vector<Subface>& pool, int depth) const;
 
   // --- shrinking ------------------------------------------------------------------------------
@@ -309,11 +318,17 @@ SurfaceSite BallRefinement::Impl::site_on(const Subface& s, const Point& p) cons
   return s.is_segment() ? crease_site(strata_, s.element, p) : patch_site(strata_, s.element, p);
 }
 
-void BallRefinement::Impl::reaching(const Subface& s, std::vector<std::uint32_t>& out) const {
+void BallRefinement::Impl::reaching(const Pool& pool, std::size_t i, std::vector<std::uint32_t>& out) const {
   out.clear();
+  const Subface& s = pool.pieces[i];
   const Point centroid = s.centroid();
   const double reach = s.circumradius(centroid);
-  for (int t = 0; t < 3; ++t) balls_.reaching(static_cast<StratumType>(t), centroid, reach, out);
+  for (std::uint32_t k = pool.first[i]; k < pool.first[i + 1]; ++k) {
+    const RefinedBall& ball = balls_[pool.reaching[k]];
+    const double limit = ball.radius + reach;
+    if ((ball.site.position - centroid).squaredNorm() < limit * limit) out.push_back(pool.reaching[k]);
+  }
+  for (int t = 0; t < 3; ++t) balls_.reaching(static_cast<StratumType>(t), centroid, reach, out, pool.known);
 }
 
 // What each ball reaching a piece can do for the piece's children, worked out once for all four:
@@ -399,7 +414,7 @@ void BallRefinement::Impl::protect_corners() {
   }
 }
 
-std::vector<Subface> BallRefinement::Impl::initial_pool(StratumType type) {
+Pool BallRefinement::Impl::initial_pool(StratumType type) {
   std::vector<Subface> pool;
   if (type == StratumType::Crease) {
     for (Index e = 0; e < dirty_edge_.size(); ++e) {
@@ -418,7 +433,8 @@ std::vector<Subface> BallRefinement::Impl::initial_pool(StratumType type) {
       dirty_face_[f] = kClean;
     }
   }
-  return pool;
+  std::vector<std::uint32_t> first(pool.size() + 1, 0);  // no ball known yet
+  return {.pieces = std::move(pool), .first = std::move(first)};
 }
 
 // Darts land in the pool in proportion to measure until kMissLimit land in a row where balls
@@ -442,41 +458,56 @@ void BallRefinement::Impl::throw_darts(StratumType type, const std::vector<Subfa
 // changes. The balls found violating C1 shrink afterwards, in pool order, and the pieces that
 // found them stay in the pool to be tested again, so the result does not depend on the thread
 // count. (Cover that a shrinking ball gave up elsewhere is lost cover, sampled in a later pass.)
-std::vector<Subface> BallRefinement::Impl::subdivide(StratumType type, const std::vector<Subface>& pool, bool last_level,
-                                                     const LostRegions& lost) {
+Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool last_level, const LostRegions& lost) {
   struct Outcome {
     std::uint8_t kept = 0;  // bit k: child k stays
     std::vector<Shrink> violations;
+    std::vector<std::uint32_t> reaching;  // the kept children's balls, one after the other
+    std::array<std::uint32_t, 4> reaching_count{};
   };
-  std::vector<Outcome> outcomes(pool.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pool.size(), 256), [&](const auto& range) {
+  std::vector<Outcome> outcomes(pool.pieces.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pool.pieces.size(), 256), [&](const auto& range) {
     std::vector<std::uint32_t> found;
     std::vector<Candidate> candidates;
     std::vector<CoverBall> cover;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      reaching(pool[i], found);
-      classify(type, pool[i], found, candidates);
-      const auto children = pool[i].split();
+      reaching(pool, i, found);
+      classify(type, pool.pieces[i], found, candidates);
+      const auto children = pool.pieces[i].split();
+      Outcome& outcome = outcomes[i];
       for (std::size_t k = 0; k < children.size(); ++k) {
         const Subface& child = children[k];
         if (last_level || !(child.measure() > 0) || !lost.meets(child)) continue;  // below any meaningful size
-        const std::size_t found = outcomes[i].violations.size();
+        const std::size_t found_before = outcome.violations.size();
         if (covers(child, candidates, cover)) {
-          find_violations(child, candidates, outcomes[i].violations);
-          if (outcomes[i].violations.size() == found) continue;
+          find_violations(child, candidates, outcome.violations);
+          if (outcome.violations.size() == found_before) continue;
         }
-        outcomes[i].kept |= 1 << k;
+        outcome.kept |= 1 << k;
+        const Point centroid = child.centroid();
+        const double reach = child.circumradius(centroid);
+        for (const Candidate& c : candidates) {
+          if ((c.centre - centroid).squaredNorm() < (c.radius + reach) * (c.radius + reach)) {
+            outcome.reaching.push_back(c.ball);
+            ++outcome.reaching_count[k];
+          }
+        }
       }
     }
   });
-  std::vector<Subface> next;
-  next.reserve(pool.size() * 2);
-  for (std::size_t i = 0; i < pool.size(); ++i) {
-    for (const Shrink& v : outcomes[i].violations) shrink(v.ball, v.radius, Reason::C1);
-    if (outcomes[i].kept == 0) continue;
-    const auto children = pool[i].split();
+  Pool next;
+  next.known = static_cast<std::uint32_t>(balls_.size());
+  next.pieces.reserve(pool.pieces.size() * 2);
+  for (std::size_t i = 0; i < pool.pieces.size(); ++i) {
+    const Outcome& outcome = outcomes[i];
+    for (const Shrink& v : outcome.violations) shrink(v.ball, v.radius, Reason::C1);
+    if (outcome.kept == 0) continue;
+    const auto children = pool.pieces[i].split();
+    next.reaching.insert(next.reaching.end(), outcome.reaching.begin(), outcome.reaching.end());
     for (std::size_t k = 0; k < children.size(); ++k) {
-      if (outcomes[i].kept >> k & 1) next.push_back(children[k]);
+      if (!(outcome.kept >> k & 1)) continue;
+      next.pieces.push_back(children[k]);
+      next.first.push_back(next.first.back() + outcome.reaching_count[k]);
     }
   }
   return next;
@@ -500,7 +531,7 @@ void BallRefinement::Impl::sample(StratumType type) {
   std::vector<geometry::Box>& lost_boxes = type == StratumType::Crease ? lost_edges_ : lost_faces_;
   const LostRegions lost(lost_boxes);
   lost_boxes.clear();
-  std::vector<Subface> pool = initial_pool(type);
+  Pool pool = initial_pool(type);
   // Each return of the phase loop to this type is a pass of its own, with its own progress.
   const int pass = ++passes_[static_cast<int>(type)];
   const std::string phase = std::string(type == StratumType::Crease ? "refinement: creases" : "refinement: patches") +
@@ -508,16 +539,16 @@ void BallRefinement::Impl::sample(StratumType type) {
   // Progress: the share of the elements sampled in this pass that have no piece left in the
   // pool. (The remaining area vanishes long before the work does, so it would be a poor guide.)
   std::vector<char> pending(type == StratumType::Crease ? strata_.topology.num_edges() : mesh_.num_faces(), 0);
-  const std::size_t initial_elements = pool.size();
-  for (int depth = 0; !pool.empty(); ++depth) {
+  const std::size_t initial_elements = pool.pieces.size();
+  for (int depth = 0; !pool.pieces.empty(); ++depth) {
     std::size_t elements = 0;
-    for (const Subface& piece : pool) elements += !pending[piece.element] && (pending[piece.element] = 1);
-    for (const Subface& piece : pool) pending[piece.element] = 0;
+    for (const Subface& piece : pool.pieces) elements += !pending[piece.element] && (pending[piece.element] = 1);
+    for (const Subface& piece : pool.pieces) pending[piece.element] = 0;
     report(phase, initial_elements > 0 ? 1.0 - static_cast<double>(elements) / initial_elements : -1);
-    throw_darts(type, pool, phase);
+    throw_darts(type, pool.pieces, phase);
     ++stats_.subdivisions;
     pool = subdivide(type, pool, depth + 1 >= kMaxDepth, lost);
-    check_pool_size(pool, depth + 1);
+    check_pool_size(pool.pieces, depth + 1);
   }
 }
 
