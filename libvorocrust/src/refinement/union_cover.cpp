@@ -1,6 +1,7 @@
 #include "refinement/union_cover.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace vorocrust {
@@ -39,7 +40,16 @@ struct Disc {
 
 // Points where segment pq (in the disc's plane) crosses the disc's circle. Crossings a rounding
 // error beyond an end still count: an extra point only makes the cover test stricter.
-void crossings(const Point& p, const Point& q, const Disc& disc, std::vector<Point>& out) {
+// At most two points, without allocating.
+struct Crossings {
+  std::array<Point, 2> points;
+  int count = 0;
+  void push_back(const Point& p) { points[count++] = p; }
+  const Point* begin() const { return points.data(); }
+  const Point* end() const { return points.data() + count; }
+};
+
+void crossings(const Point& p, const Point& q, const Disc& disc, Crossings& out) {
   const Point d = q - p, f = p - disc.centre;
   const double a = d.squaredNorm();
   if (a == 0) return;
@@ -53,7 +63,7 @@ void crossings(const Point& p, const Point& q, const Disc& disc, std::vector<Poi
 }
 
 // Points where two circles of one plane (with normal `normal`) cross.
-void circle_crossings(const Disc& first, const Disc& second, const Point& normal, std::vector<Point>& out) {
+void circle_crossings(const Disc& first, const Disc& second, const Point& normal, Crossings& out) {
   const Point offset = second.centre - first.centre;
   const double d2 = offset.squaredNorm();
   if (d2 == 0) return;
@@ -86,14 +96,20 @@ bool triangle_covered(const Point& a, const Point& b, const Point& c, const std:
   const Point normal = (b - a).cross(c - a);
   const double n2 = normal.squaredNorm();
   if (n2 == 0) return false;
-  std::vector<Disc> discs;
+  // More balls than this over one piece come only with pieces far larger than the balls, which
+  // splitting serves better: such a piece counts as not covered.
+  constexpr std::size_t kMaxDiscs = 48;
+  std::array<Disc, kMaxDiscs> discs;
+  std::size_t count = 0;
   for (const CoverBall& ball : balls) {
     const double h = (ball.centre - a).dot(normal) / n2;
     const double rho2 = ball.radius * ball.radius - h * h * n2;
-    if (rho2 > 0) discs.push_back({Point(ball.centre - h * normal), rho2});
+    if (!(rho2 > 0)) continue;
+    if (count == kMaxDiscs) return false;
+    discs[count++] = {Point(ball.centre - h * normal), rho2};
   }
   const auto inside_another = [&](const Point& p, std::size_t skip1, std::size_t skip2) {
-    for (std::size_t k = 0; k < discs.size(); ++k) {
+    for (std::size_t k = 0; k < count; ++k) {
       if (k != skip1 && k != skip2 && (p - discs[k].centre).squaredNorm() < discs[k].radius2) return true;
     }
     return false;
@@ -103,19 +119,18 @@ bool triangle_covered(const Point& a, const Point& b, const Point& c, const std:
   for (const Point* corner : corners) {
     if (!inside_another(*corner, kNone, kNone)) return false;
   }
-  std::vector<Point> points;
-  for (std::size_t i = 0; i < discs.size(); ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     for (int e = 0; e < 3; ++e) {
-      points.clear();
+      Crossings points;
       crossings(*corners[e], *corners[(e + 1) % 3], discs[i], points);
       for (const Point& p : points) {
         if (!inside_another(p, i, kNone)) return false;
       }
     }
   }
-  for (std::size_t i = 0; i < discs.size(); ++i) {
-    for (std::size_t j = i + 1; j < discs.size(); ++j) {
-      points.clear();
+  for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t j = i + 1; j < count; ++j) {
+      Crossings points;
       circle_crossings(discs[i], discs[j], normal, points);
       for (const Point& p : points) {
         if (near_triangle(p, a, b, c, normal) && !inside_another(p, i, j)) return false;
