@@ -99,7 +99,7 @@ int run_mesh(const MeshArgs& args) {
       if (surface) {
         std::fprintf(stderr, "vorocrust: %zu surface seeds, a surface of %zu triangles after %zu rounds of sliver "
                      "elimination\n", result->seeds.size(), result->surface.num_faces(),
-                     result->slivers.iterations.size() - 1);
+                     result->slivers.rounds());
         const SurfaceQuality& q = *result->surface_quality;
         std::fprintf(stderr, "vorocrust: smallest angle %.1f deg, %.2f %% of angles below 30 deg, Q min %.3f, "
                      "Hausdorff %.3f %% of the diagonal, topology %s\n", q.min_angle_degrees,

@@ -83,6 +83,8 @@ struct SliverIteration {
 struct SliverStats {
   std::vector<SliverIteration> iterations;  // the last one found no half-covered pair
   bool safe_mode = false;  // alpha/2-deep coverage accepted after 100 iterations
+  // Rounds of shrinking: every iteration but the last, which found nothing to shrink.
+  std::size_t rounds() const { return iterations.empty() ? 0 : iterations.size() - 1; }
 };
 
 struct FeatureCounts {

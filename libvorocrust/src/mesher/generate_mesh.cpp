@@ -112,10 +112,7 @@ MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, c
   });
   result.balls = refinement.balls();
   SurfaceSeeds seeds = clock("surface seeds", [&] {
-    const RegionLocator regions(surface);
-    std::vector<std::string> names = surface.has_regions() ? surface.region_names
-                                                           : std::vector<std::string>{"outside", "inside"};
-    return surface_seeds(refinement.index(), pairs.uncovered, regions, std::move(names));
+    return surface_seeds(refinement.index(), pairs.uncovered, RegionLocator(surface));
   });
   result.seeds = std::move(seeds.seeds);
   result.surface = std::move(seeds.surface);

@@ -191,9 +191,9 @@ class BallRefinement::Impl {
   std::vector<bool> corner_placed_;
   std::vector<std::uint32_t> unsettled_[3];  // per stratum type: balls that may break C3 (enforce_lipschitz)
   int lowest_shrunk_ = 3;
-  int restart_phase_ = 0;  // where the next run() starts: the lowest type shrunk since the last
+  int restart_phase_ = 0;  // where the next run() starts: the lowest type shrunk since the last run()
   double deep_ = kDeep;    // C4: coverage must be this deep (1 - alpha)
-  int passes_[3] = {0, 0, 0};  // lowest stratum type whose ball shrank since it was last reset
+  int passes_[3] = {0, 0, 0};  // per stratum type: sampling passes so far, named in progress
   double min_radius_ = 0;
   std::unique_ptr<geometry::BoxTree> edge_tree_, face_tree_;
   std::vector<std::uint32_t> scratch_;

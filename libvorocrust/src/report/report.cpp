@@ -175,7 +175,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                         {"max_shrinkage_ratio", it.max_shrinkage_ratio},
                         {"seconds", it.seconds}});
     }
-    doc["slivers"] = {{"iterations", m.slivers.iterations.size() - 1},
+    doc["slivers"] = {{"iterations", m.slivers.rounds()},
                       {"half_covered_left", m.slivers.iterations.back().half_covered},
                       {"safe_mode", m.slivers.safe_mode},
                       {"per_iteration", rounds}};

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <string>
@@ -24,10 +25,18 @@ constexpr double kClearance = 0.05;
 // points; a handful of covering balls is the rule, so this cap only bounds pathological cases.
 constexpr std::size_t kMaxCandidates = 10;
 
+// The least shrinking offered so far: ball `ball` to `radius`, by the ratio Delta.
 struct Candidate {
   std::uint32_t ball = 0;
   double radius = 0;
   double ratio = std::numeric_limits<double>::infinity();
+
+  // Ball `q` (index `ball`) giving up a point at distance d < q.radius (paper 2.4, "Shrinkage
+  // Ratio"); on a tie the lower ball index wins, so the choice is independent of order.
+  void offer(std::uint32_t candidate, const RefinedBall& q, double d) {
+    const double r = (q.radius - d) / q.radius;
+    if (r < ratio || (r == ratio && candidate < ball)) *this = {candidate, d * (1 - kClearance), r};
+  }
 };
 
 // The quartet in isolation: for each of its four triplets whose pair the fourth ball
@@ -46,11 +55,7 @@ void consider_quartet(const BallIndex& balls, const std::array<std::uint32_t, 4>
     const RefinedBall& q = balls[quartet[out]];
     const double d0 = (q.site.position - (*points)[0]).norm(), d1 = (q.site.position - (*points)[1]).norm();
     if ((d0 < q.radius) == (d1 < q.radius)) continue;  // not half-covered by q
-    const double d = std::min(d0, d1);
-    const double ratio = (q.radius - d) / q.radius;
-    if (ratio < best.ratio || (ratio == best.ratio && quartet[out] < best.ball)) {
-      best = {quartet[out], d * (1 - kClearance), ratio};
-    }
+    best.offer(quartet[out], q, std::min(d0, d1));
   }
 }
 
@@ -72,9 +77,8 @@ SliverShrinks choose_sliver_shrinks(const BallIndex& balls, const std::vector<Ha
       // directly, as the paper's inset does.
       const Point& g = h.pair.points[h.covered];
       for (std::uint32_t s : h.fourth) {
-        const RefinedBall& q = balls[s];
-        const double d = (q.site.position - g).norm();
-        if (d < q.radius && (q.radius - d) / q.radius < best.ratio) best = {s, d * (1 - kClearance), (q.radius - d) / q.radius};
+        const double d = (balls[s].site.position - g).norm();
+        if (d < balls[s].radius) best.offer(s, balls[s], d);
       }
     }
     if (!std::isfinite(best.ratio)) continue;

@@ -27,6 +27,14 @@ std::int32_t RegionLocator::region_in_front(Index face) const {
   return surface_.has_regions() ? surface_.face_regions[face].front : kOutsideRegion;
 }
 
+std::vector<std::string> RegionLocator::region_names() const {
+  if (surface_.has_regions()) return surface_.region_names;
+  std::vector<std::string> names(2);
+  names[kOutsideRegion] = "outside";
+  names[kInsideRegion] = "inside";
+  return names;
+}
+
 RegionLocator::Hit RegionLocator::first_hit(const Point& p, const Point& direction) const {
   const Point d = direction.normalized();
   Point inverse;

@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "geometry/box_tree.hpp"
 #include "vorocrust/surface_mesh.hpp"
@@ -22,6 +24,8 @@ class RegionLocator {
 
   std::int32_t region_behind(Index face) const;
   std::int32_t region_in_front(Index face) const;
+  // The names of the labels above: the surface's own, or "outside" and "inside".
+  std::vector<std::string> region_names() const;
 
  private:
   struct Hit {

@@ -7,8 +7,7 @@
 
 namespace vorocrust {
 
-SurfaceSeeds surface_seeds(const BallIndex& balls, const std::vector<SeedPair>& pairs, const RegionLocator& regions,
-                           std::vector<std::string> region_names) {
+SurfaceSeeds surface_seeds(const BallIndex& balls, const std::vector<SeedPair>& pairs, const RegionLocator& regions) {
   SurfaceSeeds out;
   out.seeds.resize(2 * pairs.size());
   // Each seed looks for its side towards its partner: the surface passes between the two, so
@@ -36,7 +35,7 @@ SurfaceSeeds surface_seeds(const BallIndex& balls, const std::vector<SeedPair>& 
     }
   }
   surface.groups.push_back({"surface", ""});
-  surface.region_names = std::move(region_names);
+  surface.region_names = regions.region_names();
   std::vector<RegionPair> face_regions;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const std::int32_t front = out.seeds[2 * i].region, back = out.seeds[2 * i + 1].region;

@@ -18,8 +18,6 @@ struct SurfaceSeeds {
   SurfaceMesh surface;
 };
 
-// `region_names` names the regions of the labels RegionLocator gives.
-SurfaceSeeds surface_seeds(const BallIndex& balls, const std::vector<SeedPair>& pairs, const RegionLocator& regions,
-                           std::vector<std::string> region_names);
+SurfaceSeeds surface_seeds(const BallIndex& balls, const std::vector<SeedPair>& pairs, const RegionLocator& regions);
 
 }  // namespace vorocrust
