@@ -16,3 +16,5 @@
 #include "vorocrust/validate.hpp"
 #include "vorocrust/version.hpp"
 #include "vorocrust/write_mesh.hpp"
+#include "vorocrust/write_openfoam.hpp"
+#include "vorocrust/write_vtu.hpp"

@@ -148,6 +148,26 @@ struct Assembly {
   }
 };
 
+// Points that no face kept (every face around them welded away) are dropped, so that every
+// point belongs to a face; the others keep their order.
+void drop_unused_points(VoronoiMesh& mesh) {
+  std::vector<Index> renumber(mesh.points.size(), 0);
+  for (const VoronoiFace& f : mesh.faces) {
+    for (Index p : f.points) renumber[p] = 1;
+  }
+  Index kept = 0;
+  for (std::size_t p = 0; p < renumber.size(); ++p) {
+    if (!renumber[p]) continue;
+    mesh.points[kept] = mesh.points[p];
+    renumber[p] = kept++;
+  }
+  if (kept == mesh.points.size()) return;
+  mesh.points.resize(kept);
+  for (VoronoiFace& f : mesh.faces) {
+    for (Index& p : f.points) p = renumber[p];
+  }
+}
+
 // Volume and centroid of every cell, from its faces fanned about their vertex means: the same
 // triangles on both sides of a face, so the volumes add up to the volume the boundary encloses.
 void measure_cells(VoronoiMesh& mesh) {
@@ -212,6 +232,7 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
     if (std::count(failed.begin(), failed.end(), 1)) {
       fail_on_lowest(failed, cell_seeds, "and a neighbour see their common face differently after welding");
     }
+    drop_unused_points(mesh);
     measure_cells(mesh);
   });
   return mesh;
