@@ -77,12 +77,12 @@ TEST(Cells, DegenerateLatticeWeldsIntoCubes) {
 }
 
 TEST(Cells, SameResultForOneAndTwoThreads) {
-  const auto seeds = test::lattice_seeds(26, 0.3, test::ball_region(Point(12.5, 12.5, 12.5), 11.6), 5);
+  const auto seeds = test::lattice_seeds(32, 0.3, test::ball_region(Point(15.5, 15.5, 15.5), 14.6), 5);
   CellsOptions one, two;
   one.threads = 1;
   two.threads = 2;
   const VoronoiMesh a = compute_cells(seeds, one), b = compute_cells(seeds, two);
-  ASSERT_GT(a.cells.size(), 4096u) << "more than one slab";
+  ASSERT_GT(a.cells.size(), 8192u) << "more than one slab";
   ASSERT_EQ(a.points, b.points);
   ASSERT_EQ(a.faces.size(), b.faces.size());
   for (std::size_t f = 0; f < a.faces.size(); ++f) {

@@ -6,37 +6,47 @@
 namespace vorocrust::cells {
 
 std::optional<CellFaces> welded_faces(const RawCell& cell, std::size_t first_instance, const std::vector<Index>& point_of) {
+  // Local names for the cell's points: the first of its vertices welded to each, so that the
+  // checks below run on small arrays rather than sorted lists.
+  const std::size_t n = cell.vertices.size();
+  std::vector<std::uint32_t> local(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const Index p = point_of[first_instance + v];
+    std::size_t u = 0;
+    while (point_of[first_instance + u] != p) ++u;
+    local[v] = static_cast<std::uint32_t>(u);
+  }
+
   CellFaces out;
-  std::vector<Index> polygon;
-  for (std::size_t f = 0; f < cell.num_faces(); ++f) {
+  std::vector<std::uint32_t> polygon;
+  std::vector<std::uint32_t> stamp(n, UINT32_MAX);
+  std::vector<std::uint8_t> edge_uses(n * n, 0);
+  for (std::uint32_t f = 0; f < cell.num_faces(); ++f) {
     polygon.clear();
     for (std::uint32_t k = cell.starts[f]; k < cell.starts[f + 1]; ++k) {
-      const Index p = point_of[first_instance + cell.cycles[k]];
-      if (polygon.empty() || polygon.back() != p) polygon.push_back(p);
+      const std::uint32_t v = local[cell.cycles[k]];
+      if (polygon.empty() || polygon.back() != v) polygon.push_back(v);
     }
     while (polygon.size() > 1 && polygon.back() == polygon.front()) polygon.pop_back();
     if (polygon.size() < 3) continue;
-    std::vector<Index> sorted = polygon;
-    std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return std::nullopt;
+    for (std::uint32_t v : polygon) {
+      if (stamp[v] == f) return std::nullopt;  // the face passes a point twice
+      stamp[v] = f;
+    }
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      if (++edge_uses[polygon[k] * n + polygon[(k + 1) % polygon.size()]] > 1) return std::nullopt;
+    }
     out.neighbours.push_back(cell.neighbours[f]);
     out.starts.push_back(static_cast<std::uint32_t>(out.points.size()));
-    out.points.insert(out.points.end(), polygon.begin(), polygon.end());
+    for (std::uint32_t v : polygon) out.points.push_back(point_of[first_instance + v]);
   }
   out.starts.push_back(static_cast<std::uint32_t>(out.points.size()));
 
-  // Closed: every directed edge once, and its reverse once.
-  std::vector<std::pair<Index, Index>> edges;
-  for (std::size_t f = 0; f < out.num_faces(); ++f) {
-    for (std::uint32_t k = out.starts[f]; k < out.starts[f + 1]; ++k) {
-      const std::uint32_t next = k + 1 == out.starts[f + 1] ? out.starts[f] : k + 1;
-      edges.emplace_back(out.points[k], out.points[next]);
+  // Closed: every directed edge once (checked above), and its reverse once.
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      if (edge_uses[a * n + b] != edge_uses[b * n + a]) return std::nullopt;
     }
-  }
-  std::sort(edges.begin(), edges.end());
-  if (std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return std::nullopt;
-  for (const auto& [a, b] : edges) {
-    if (!std::binary_search(edges.begin(), edges.end(), std::make_pair(b, a))) return std::nullopt;
   }
   if (out.num_faces() < 4) return std::nullopt;
   return out;

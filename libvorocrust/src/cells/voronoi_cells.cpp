@@ -17,7 +17,7 @@ namespace {
 
 // Cells per slab: enough for containers to pay off, few enough that two threads share the work
 // evenly; fixed, so that the result does not depend on the thread count.
-constexpr std::size_t kSlabCells = 4096;
+constexpr std::size_t kSlabCells = 8192;
 // Voro++'s own estimate of the best number of seeds per block of its grid.
 constexpr double kSeedsPerBlock = 5.6;
 // First margin of neighbouring seeds around a slab, in units of the seed spacing.

@@ -3,7 +3,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
-#include <Eigen/LU>
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -34,17 +34,40 @@ void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Ind
     const auto it = std::find(other.neighbours.begin(), other.neighbours.end(), static_cast<std::int32_t>(cell_seeds[c]));
     if (it == other.neighbours.end()) continue;  // a face only one side sees: degenerate, left to the sweep
     const auto g = static_cast<std::size_t>(it - other.neighbours.begin());
-    for (std::uint32_t k = cell.starts[f]; k < cell.starts[f + 1]; ++k) {
-      const Point& u = cell.vertices[cell.cycles[k]];
+    const std::uint32_t* mine = cell.cycles.data() + cell.starts[f];
+    const std::uint32_t* theirs = other.cycles.data() + other.starts[g];
+    const std::size_t size = cell.starts[f + 1] - cell.starts[f], other_size = other.starts[g + 1] - other.starts[g];
+    const auto unite = [&](std::uint32_t u, std::uint32_t w) {
+      sets.unite(static_cast<std::uint32_t>(first[c] + u), static_cast<std::uint32_t>(first[d] + w));
+    };
+    // As a rule the two cycles are the same points run in opposite directions: pair them off
+    // from the counterpart of the first, checking each pair.
+    if (size == other_size) {
+      const Point& u0 = cell.vertices[mine[0]];
+      std::size_t at = 0;
+      for (std::size_t m = 1; m < size; ++m) {
+        if ((other.vertices[theirs[m]] - u0).squaredNorm() < (other.vertices[theirs[at]] - u0).squaredNorm()) at = m;
+      }
+      bool paired = true;
+      for (std::size_t k = 0; k < size && paired; ++k) {
+        const Point& u = cell.vertices[mine[k]];
+        paired = (other.vertices[theirs[(at + size - k) % size]] - u).norm() <= tolerance(u, seed);
+      }
+      if (paired) {
+        for (std::size_t k = 0; k < size; ++k) unite(mine[k], theirs[(at + size - k) % size]);
+        continue;
+      }
+    }
+    // Otherwise (a degenerate vertex resolved differently on each side) each to its nearest.
+    for (std::size_t k = 0; k < size; ++k) {
+      const Point& u = cell.vertices[mine[k]];
       double best = tolerance(u, seed);
       std::uint32_t match = UINT32_MAX;
-      for (std::uint32_t m = other.starts[g]; m < other.starts[g + 1]; ++m) {
-        const double dist = (other.vertices[other.cycles[m]] - u).norm();
-        if (dist <= best) best = dist, match = other.cycles[m];
+      for (std::size_t m = 0; m < other_size; ++m) {
+        const double dist = (other.vertices[theirs[m]] - u).norm();
+        if (dist <= best) best = dist, match = theirs[m];
       }
-      if (match != UINT32_MAX) {
-        sets.unite(static_cast<std::uint32_t>(first[c] + cell.cycles[k]), static_cast<std::uint32_t>(first[d] + match));
-      }
+      if (match != UINT32_MAX) unite(mine[k], match);
     }
   }
 }
@@ -74,23 +97,25 @@ void unite_close_points(const std::vector<Point>& position, const std::vector<do
 
 // The point equidistant from `generators` (least squares beyond four), or `fallback` when they
 // do not pin it down within `limit`.
-Point circumcentre(const std::vector<Index>& generators, const std::vector<Point>& seeds, const Point& fallback,
+Point circumcentre(const Index* generators, std::size_t count, const std::vector<Point>& seeds, const Point& fallback,
                    double limit) {
+  if (count < 4) return fallback;
   const Point& g0 = seeds[generators[0]];
-  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d square;
-  Eigen::Vector3d square_rhs;
-  for (std::size_t k = 1; k < generators.size(); ++k) {
-    const Eigen::Vector3d a = seeds[generators[k]] - g0;
-    const double b = 0.5 * a.squaredNorm();
-    normal += a * a.transpose();
-    rhs += b * a;
-    if (k <= 3) square.row(static_cast<Eigen::Index>(k - 1)) = a.transpose(), square_rhs[static_cast<Eigen::Index>(k - 1)] = b;
+  Point x;
+  if (count == 4) {
+    const Point a = seeds[generators[1]] - g0, b = seeds[generators[2]] - g0, c = seeds[generators[3]] - g0;
+    const Point bc = b.cross(c), ca = c.cross(a), ab = a.cross(b);
+    x = (a.squaredNorm() * bc + b.squaredNorm() * ca + c.squaredNorm() * ab) / (2 * a.dot(bc));
+  } else {
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    for (std::size_t k = 1; k < count; ++k) {
+      const Eigen::Vector3d a = seeds[generators[k]] - g0;
+      normal += a * a.transpose();
+      rhs += 0.5 * a.squaredNorm() * a;
+    }
+    x = normal.ldlt().solve(rhs);
   }
-  if (generators.size() < 4) return fallback;
-  const Eigen::Vector3d x = generators.size() == 4 ? Eigen::Vector3d(square.fullPivLu().solve(square_rhs))
-                                                   : Eigen::Vector3d(normal.fullPivLu().solve(rhs));
   const Point p = g0 + x;
   return p.allFinite() && (p - fallback).norm() <= limit ? p : fallback;
 }
@@ -134,22 +159,24 @@ WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vecto
   w.points.resize(points);
   tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
     const RawCell& cell = cells[c];
-    std::vector<std::pair<std::uint32_t, Index>> around;  // (vertex, seed across a face at it)
+    // The seeds around each vertex: the cell's own, then those across the faces at it.
+    const std::size_t n = cell.vertices.size();
+    std::vector<std::uint32_t> start(n + 2, 0);
+    for (std::uint32_t v : cell.cycles) ++start[v + 2];
+    for (std::size_t v = 0; v < n; ++v) start[v + 2] += start[v + 1] + 1;
+    std::vector<Index> around(cell.cycles.size() + n);
+    for (std::size_t v = 0; v < n; ++v) around[start[v + 1]++] = cell_seeds[c];
     for (std::size_t f = 0; f < cell.num_faces(); ++f) {
       for (std::uint32_t k = cell.starts[f]; k < cell.starts[f + 1]; ++k) {
-        around.emplace_back(cell.cycles[k], static_cast<Index>(cell.neighbours[f]));
+        around[start[cell.cycles[k] + 1]++] = static_cast<Index>(cell.neighbours[f]);
       }
     }
-    std::sort(around.begin(), around.end());
-    std::vector<Index> generators;
-    for (std::size_t k = 0; k < around.size();) {
-      const std::uint32_t v = around[k].first;
+    for (std::size_t v = 0; v < n; ++v) {
       const std::size_t i = w.first_instance[c] + v;
-      generators.assign(1, cell_seeds[c]);
-      for (; k < around.size() && around[k].first == v; ++k) generators.push_back(around[k].second);
       if (root[i] != i) continue;
       const Point at = frame.centre + frame.scale * cell.vertices[v];
-      w.points[label[i]] = circumcentre(generators, frame.original, at, 10 * tol[i] * frame.scale);
+      w.points[label[i]] = circumcentre(around.data() + start[v], start[v + 1] - start[v], frame.original, at,
+                                        10 * tol[i] * frame.scale);
     }
   });
   return w;
