@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "cells_command.hpp"
 #include "check_balls_command.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -101,6 +102,24 @@ int main(int argc, char** argv) {
   quality_cmd->add_option("--seed", quality.options.seed, "Seed of the random points")->capture_default_str();
   quality_cmd->add_flag("--json", quality.json, "Print one JSON object instead of text");
 
+  CellsArgs cells;
+  CLI::App* cells_cmd = app.add_subcommand(
+      "cells", "Build the conforming Voronoi mesh of a seed set (a run's seeds.csv): mesh.vtu and an OpenFOAM case");
+  cells_cmd->add_option("SEEDS", cells.seeds_file, "Seeds as written by `vorocrust mesh`: x,y,z,label,radius,kind")
+      ->required();
+  cells_cmd->add_option("-o,--output", cells.output_dir, "Output folder (created if missing)")->required();
+  cells_cmd->add_option("--format", cells.formats, "Outputs, comma-separated: vtu (mesh.vtu), openfoam (case/)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"vtu", "openfoam"}))
+      ->capture_default_str();
+  cells_cmd->add_option("--materials", cells.materials,
+                        "Labels that get cells, comma-separated (default: every label > 0; 0 is outside)")
+      ->delimiter(',');
+  cells_cmd->add_option("--threads", cells.threads, "Worker threads, 0 for all cores")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cells_cmd->add_flag("-q,--quiet", cells.quiet, "Print nothing but errors");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -118,6 +137,7 @@ int main(int argc, char** argv) {
     if (*info_cmd) return run_info(info);
     if (*check_cmd) return run_check_balls(check);
     if (*quality_cmd) return run_quality(quality);
+    if (*cells_cmd) return run_cells(cells);
     mesh.command_line.assign(argv, argv + argc);
     return run_mesh(mesh);
   } catch (const Error& e) {

@@ -13,6 +13,8 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   # tests and benchmarks (the CLI tests run under Debian's own python3)
   libgtest-dev libgmock-dev libbenchmark-dev python3
+  # the cells' exports checked by the real readers: VTK's Python module and OpenFOAM's checkMesh
+  python3-vtk9 openfoam
   # the MeshLab plugin: MeshLab itself, what its headers need (Qt5, GLEW), dpkg-dev for the
   # `apt-get source` of scripts/fetch-meshlab-source.sh, and for meshlabserver's tests a virtual
   # X server with Mesa's software OpenGL

@@ -33,4 +33,11 @@ struct Seed {
 // OUTDIR/seeds.csv: `x,y,z,label,radius,kind`, 17 significant digits, written atomically.
 void write_seeds_csv(const std::vector<Seed>& seeds, const std::filesystem::path& path);
 
+// Reads what write_seeds_csv writes: the header line `x,y,z,label,radius,kind`, then one seed a
+// line (blank lines skipped). Throws Error(UnreadableInput) naming the file and line of the
+// first bad line: a missing or wrong header, a field count other than six, a number that does
+// not parse or is not finite, a label out of the 32-bit range, a kind other than surface,
+// interior or outside.
+std::vector<Seed> read_seeds_csv(const std::filesystem::path& path);
+
 }  // namespace vorocrust

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "vorocrust/atomic_file.hpp"
+#include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/mesh_info.hpp"
 #include "vorocrust/mesher.hpp"
@@ -15,3 +16,5 @@
 #include "vorocrust/validate.hpp"
 #include "vorocrust/version.hpp"
 #include "vorocrust/write_mesh.hpp"
+#include "vorocrust/write_openfoam.hpp"
+#include "vorocrust/write_vtu.hpp"

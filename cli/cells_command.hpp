@@ -1,0 +1,24 @@
+// `vorocrust cells SEEDS.csv -o OUTDIR`: the conforming Voronoi mesh of a seed set, such as the
+// seeds.csv of a mesh run, written as OUTDIR/mesh.vtu and the OpenFOAM case OUTDIR/case/ (the
+// formats named by --format). Prints one summary line unless quiet. Returns an exit code
+// (exit_codes.hpp); a bad seeds.csv is an Error naming its file and line.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace vorocrust::cli {
+
+struct CellsArgs {
+  std::string seeds_file;
+  std::string output_dir;
+  std::vector<std::string> formats{"vtu", "openfoam"};
+  std::vector<std::int32_t> materials;  // empty: every label > 0
+  int threads = 0;
+  bool quiet = false;
+};
+
+int run_cells(const CellsArgs& args);
+
+}  // namespace vorocrust::cli

@@ -1,0 +1,64 @@
+// vorocrust/cells.hpp — the conforming Voronoi mesh of a labelled seed set.
+//
+// compute_cells(seeds, options) gives the Voronoi cell of every seed whose region is a material,
+// assembled into one conforming polyhedral mesh:
+// - a Voronoi vertex shared by several cells is one point. Near-degenerate vertices (five or more
+//   seeds nearly on one sphere, the rule at VoroCrust's surface seeds) are welded: points closer
+//   than 1e-9 of their empty-sphere radius (and never less than 1e-9 of the seeds' mean spacing)
+//   are one point, for every cell that has them; edges and faces this collapses are dropped on
+//   both sides alike;
+// - every face is listed once. Its polygon's normal (right-hand rule) points from its owner cell
+//   to the other side; between two material cells the owner is the lower cell index;
+// - every cell is closed (each edge of the cell used by exactly two of its faces, once in each
+//   direction) and convex.
+// Cells are numbered in seed order; every point sits at equal distance from the seeds of the
+// cells around it (the seeds it is the circumcentre of), so faces are orthogonal to the links
+// between the seeds they separate.
+//
+// Throws Error(InvalidGeometry) when no seed is a material, when a seed is not finite, when a
+// material seed coincides with another seed, and "cell of seed N is not bounded by seeds" when a
+// material cell reaches past every other seed (the seeds do not enclose the materials: outside
+// seeds must surround them). The result does not depend on options.threads.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "vorocrust/seeds.hpp"
+#include "vorocrust/surface_mesh.hpp"
+
+namespace vorocrust {
+
+inline constexpr std::int32_t kNoCell = -1;
+
+struct CellsOptions {
+  std::vector<std::int32_t> materials;  // regions that get cells; empty: every region > 0
+  int threads = 0;                      // 0 = all hardware threads
+};
+
+struct VoronoiFace {
+  std::vector<Index> points;  // the polygon; its normal points from owner to neighbour side
+  std::int32_t owner = kNoCell;
+  std::int32_t neighbour = kNoCell;  // kNoCell when the other side is no material cell
+  Index owner_seed = 0;
+  Index neighbour_seed = 0;  // the seed across the face, a cell's or not
+  RegionPair regions;        // back: the owner's region; front: the region across the face
+};
+
+struct VoronoiCell {
+  Index seed = 0;
+  std::int32_t region = 0;
+  std::vector<Index> faces;  // into VoronoiMesh::faces
+  double volume = 0;
+  Point centroid = Point::Zero();
+};
+
+struct VoronoiMesh {
+  std::vector<Point> points;
+  std::vector<VoronoiFace> faces;
+  std::vector<VoronoiCell> cells;
+};
+
+VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options = {});
+
+}  // namespace vorocrust

@@ -1,0 +1,55 @@
+#include "cells/cell_faces.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace vorocrust::cells {
+
+std::optional<CellFaces> welded_faces(const RawCell& cell, std::size_t first_instance, const std::vector<Index>& point_of) {
+  // Local names for the cell's points: the first of its vertices welded to each, so that the
+  // checks below run on small arrays rather than sorted lists.
+  const std::size_t n = cell.vertices.size();
+  std::vector<std::uint32_t> local(n);
+  for (std::size_t v = 0; v < n; ++v) {
+    const Index p = point_of[first_instance + v];
+    std::size_t u = 0;
+    while (point_of[first_instance + u] != p) ++u;
+    local[v] = static_cast<std::uint32_t>(u);
+  }
+
+  CellFaces out;
+  std::vector<std::uint32_t> polygon;
+  std::vector<std::uint32_t> stamp(n, UINT32_MAX);
+  std::vector<std::uint8_t> edge_uses(n * n, 0);
+  for (std::uint32_t f = 0; f < cell.num_faces(); ++f) {
+    polygon.clear();
+    for (std::uint32_t k = cell.starts[f]; k < cell.starts[f + 1]; ++k) {
+      const std::uint32_t v = local[cell.cycles[k]];
+      if (polygon.empty() || polygon.back() != v) polygon.push_back(v);
+    }
+    while (polygon.size() > 1 && polygon.back() == polygon.front()) polygon.pop_back();
+    if (polygon.size() < 3) continue;
+    for (std::uint32_t v : polygon) {
+      if (stamp[v] == f) return std::nullopt;  // the face passes a point twice
+      stamp[v] = f;
+    }
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      if (++edge_uses[polygon[k] * n + polygon[(k + 1) % polygon.size()]] > 1) return std::nullopt;
+    }
+    out.neighbours.push_back(cell.neighbours[f]);
+    out.starts.push_back(static_cast<std::uint32_t>(out.points.size()));
+    for (std::uint32_t v : polygon) out.points.push_back(point_of[first_instance + v]);
+  }
+  out.starts.push_back(static_cast<std::uint32_t>(out.points.size()));
+
+  // Closed: every directed edge once (checked above), and its reverse once.
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      if (edge_uses[a * n + b] != edge_uses[b * n + a]) return std::nullopt;
+    }
+  }
+  if (out.num_faces() < 4) return std::nullopt;
+  return out;
+}
+
+}  // namespace vorocrust::cells

@@ -1,0 +1,241 @@
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <string>
+
+#include "cells/cell_faces.hpp"
+#include "cells/voronoi_cells.hpp"
+#include "cells/weld_vertices.hpp"
+#include "vorocrust/cells.hpp"
+#include "vorocrust/error.hpp"
+
+namespace vorocrust {
+namespace {
+
+using cells::CellFaces;
+
+bool is_material(std::int32_t region, const std::vector<std::int32_t>& materials) {
+  return materials.empty() ? region > 0 : std::find(materials.begin(), materials.end(), region) != materials.end();
+}
+
+void check_seeds(const std::vector<Seed>& seeds, const std::vector<std::int32_t>& cell_of_seed) {
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    if (!seeds[s].position.allFinite()) {
+      throw Error(Error::Kind::InvalidGeometry, "seed " + std::to_string(s) + " has a coordinate that is not a finite number");
+    }
+  }
+  std::vector<Index> order(seeds.size());
+  std::iota(order.begin(), order.end(), Index{0});
+  const auto key = [&](Index s) {
+    const Point& p = seeds[s].position;
+    return std::tuple(p.x(), p.y(), p.z(), s);
+  };
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) { return key(a) < key(b); });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    const Index a = order[k - 1], b = order[k];
+    if (seeds[a].position == seeds[b].position && (cell_of_seed[a] != kNoCell || cell_of_seed[b] != kNoCell)) {
+      throw Error(Error::Kind::InvalidGeometry, "seeds " + std::to_string(std::min(a, b)) + " and " +
+                                                    std::to_string(std::max(a, b)) + " are at the same place");
+    }
+  }
+}
+
+// Cells are computed with the seeds about one unit apart, the scale of Voro++'s tolerances.
+cells::Frame make_frame(const std::vector<Seed>& seeds) {
+  cells::Frame frame;
+  Eigen::AlignedBox3d box;
+  for (const Seed& s : seeds) box.extend(s.position);
+  frame.centre = box.center();
+  const double n = static_cast<double>(seeds.size());
+  const double spacing = std::cbrt(box.volume() / n);
+  frame.scale = spacing > 0 ? spacing : box.diagonal().norm() > 0 ? box.diagonal().norm() / n : 1.0;
+  frame.original.reserve(seeds.size());
+  frame.normalized.reserve(seeds.size());
+  for (const Seed& s : seeds) {
+    frame.original.push_back(s.position);
+    frame.normalized.push_back((s.position - frame.centre) / frame.scale);
+  }
+  return frame;
+}
+
+// The index of the face of `faces` toward `seed`, if any.
+std::optional<std::size_t> face_toward(const CellFaces& faces, Index seed) {
+  const auto it = std::find(faces.neighbours.begin(), faces.neighbours.end(), static_cast<std::int32_t>(seed));
+  if (it == faces.neighbours.end()) return std::nullopt;
+  return static_cast<std::size_t>(it - faces.neighbours.begin());
+}
+
+// Whether polygon a is polygon b run backwards, from any start.
+bool is_reverse(const Index* a, const Index* b, std::size_t n) {
+  const std::size_t at = static_cast<std::size_t>(std::find(b, b + n, a[0]) - b);
+  if (at == n) return false;
+  for (std::size_t k = 1; k < n; ++k) {
+    if (a[k] != b[(at + n - k) % n]) return false;
+  }
+  return true;
+}
+
+[[noreturn]] void fail_on_lowest(const std::vector<char>& failed, const std::vector<Index>& cell_seeds,
+                                 const std::string& what) {
+  const std::size_t c = static_cast<std::size_t>(std::find(failed.begin(), failed.end(), 1) - failed.begin());
+  throw Error(Error::Kind::Internal, "cell of seed " + std::to_string(cell_seeds[c]) + " " + what);
+}
+
+struct Assembly {
+  const std::vector<Seed>& seeds;
+  const std::vector<Index>& cell_seeds;
+  const std::vector<std::int32_t>& cell_of_seed;
+  std::vector<CellFaces> faces;  // per cell, over welded points
+
+  bool owns(std::size_t c, std::int32_t neighbour) const {
+    const std::int32_t d = cell_of_seed[static_cast<std::size_t>(neighbour)];
+    return d == kNoCell || d > static_cast<std::int32_t>(c);
+  }
+
+  // Every face once, owned by the lower cell; each cell's face list. False in failed[c] where a
+  // cell and its neighbour do not see their common face alike.
+  void build(VoronoiMesh& mesh, std::vector<char>& failed) const {
+    const std::size_t n = cell_seeds.size();
+    std::vector<std::size_t> first_face(n + 1, 0);
+    for (std::size_t c = 0; c < n; ++c) {
+      std::size_t owned = 0;
+      for (std::int32_t s : faces[c].neighbours) owned += owns(c, s);
+      first_face[c + 1] = first_face[c] + owned;
+    }
+    mesh.faces.resize(first_face[n]);
+    mesh.cells.resize(n);
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t c) {
+      const CellFaces& mine = faces[c];
+      VoronoiCell& cell = mesh.cells[c];
+      cell.seed = cell_seeds[c];
+      cell.region = seeds[cell.seed].region;
+      std::size_t next = first_face[c];
+      for (std::size_t f = 0; f < mine.num_faces(); ++f) {
+        const Index* polygon = mine.points.data() + mine.starts[f];
+        const std::size_t size = mine.starts[f + 1] - mine.starts[f];
+        const auto across = static_cast<Index>(mine.neighbours[f]);
+        if (owns(c, mine.neighbours[f])) {
+          VoronoiFace& face = mesh.faces[next];
+          face.points.assign(polygon, polygon + size);
+          face.owner = static_cast<std::int32_t>(c);
+          face.neighbour = cell_of_seed[across];
+          face.owner_seed = cell.seed;
+          face.neighbour_seed = across;
+          face.regions = {cell.region, seeds[across].region};
+          cell.faces.push_back(static_cast<Index>(next++));
+          if (face.neighbour != kNoCell && !face_toward(faces[static_cast<std::size_t>(face.neighbour)], cell.seed)) {
+            failed[c] = 1;
+          }
+          continue;
+        }
+        const auto d = static_cast<std::size_t>(cell_of_seed[across]);
+        const std::optional<std::size_t> g = face_toward(faces[d], cell.seed);
+        if (!g || faces[d].starts[*g + 1] - faces[d].starts[*g] != size ||
+            !is_reverse(polygon, faces[d].points.data() + faces[d].starts[*g], size)) {
+          failed[c] = 1;
+          continue;
+        }
+        std::size_t id = first_face[d];
+        for (std::size_t k = 0; k < *g; ++k) id += owns(d, faces[d].neighbours[k]);
+        cell.faces.push_back(static_cast<Index>(id));
+      }
+    });
+  }
+};
+
+// Points that no face kept (every face around them welded away) are dropped, so that every
+// point belongs to a face; the others keep their order.
+void drop_unused_points(VoronoiMesh& mesh) {
+  std::vector<Index> renumber(mesh.points.size(), 0);
+  for (const VoronoiFace& f : mesh.faces) {
+    for (Index p : f.points) renumber[p] = 1;
+  }
+  Index kept = 0;
+  for (std::size_t p = 0; p < renumber.size(); ++p) {
+    if (!renumber[p]) continue;
+    mesh.points[kept] = mesh.points[p];
+    renumber[p] = kept++;
+  }
+  if (kept == mesh.points.size()) return;
+  mesh.points.resize(kept);
+  for (VoronoiFace& f : mesh.faces) {
+    for (Index& p : f.points) p = renumber[p];
+  }
+}
+
+// Volume and centroid of every cell, from its faces fanned about their vertex means: the same
+// triangles on both sides of a face, so the volumes add up to the volume the boundary encloses.
+void measure_cells(VoronoiMesh& mesh) {
+  tbb::parallel_for(std::size_t{0}, mesh.cells.size(), [&](std::size_t c) {
+    VoronoiCell& cell = mesh.cells[c];
+    const Point apex = mesh.points[mesh.faces[cell.faces.front()].points.front()];
+    double volume = 0;
+    Point moment = Point::Zero();
+    for (Index id : cell.faces) {
+      const VoronoiFace& face = mesh.faces[id];
+      const bool outward = face.owner == static_cast<std::int32_t>(c);
+      Point centre = Point::Zero();
+      for (Index p : face.points) centre += mesh.points[p];
+      centre /= static_cast<double>(face.points.size());
+      for (std::size_t k = 0; k < face.points.size(); ++k) {
+        Point a = mesh.points[face.points[k]], b = mesh.points[face.points[(k + 1) % face.points.size()]];
+        if (!outward) std::swap(a, b);
+        const double v = (a - centre).cross(b - centre).dot(centre - apex) / 6;
+        volume += v;
+        moment += v * (apex + centre + a + b) / 4;
+      }
+    }
+    cell.volume = volume;
+    cell.centroid = moment / volume;
+  });
+}
+
+}  // namespace
+
+VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options) {
+  std::vector<Index> cell_seeds;
+  std::vector<std::int32_t> cell_of_seed(seeds.size(), kNoCell);
+  for (std::size_t s = 0; s < seeds.size(); ++s) {
+    if (!is_material(seeds[s].region, options.materials)) continue;
+    cell_of_seed[s] = static_cast<std::int32_t>(cell_seeds.size());
+    cell_seeds.push_back(static_cast<Index>(s));
+  }
+  if (cell_seeds.empty()) {
+    throw Error(Error::Kind::InvalidGeometry, "no seed has a material region, so there is no cell to make");
+  }
+  check_seeds(seeds, cell_of_seed);
+
+  VoronoiMesh mesh;
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    const cells::Frame frame = make_frame(seeds);
+    const std::vector<cells::RawCell> raw = cells::compute_voronoi_cells(frame.normalized, cell_seeds);
+    cells::WeldedVertices welded = cells::weld_vertices(raw, cell_seeds, cell_of_seed, frame);
+
+    Assembly assembly{seeds, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
+    std::vector<char> failed(raw.size(), 0);
+    tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
+      std::optional<CellFaces> f = cells::welded_faces(raw[c], welded.first_instance[c], welded.point_of);
+      if (f) assembly.faces[c] = std::move(*f);
+      else failed[c] = 1;
+    });
+    if (std::count(failed.begin(), failed.end(), 1)) {
+      fail_on_lowest(failed, cell_seeds, "is not closed after welding its degenerate vertices");
+    }
+    mesh.points = std::move(welded.points);
+    assembly.build(mesh, failed);
+    if (std::count(failed.begin(), failed.end(), 1)) {
+      fail_on_lowest(failed, cell_seeds, "and a neighbour see their common face differently after welding");
+    }
+    drop_unused_points(mesh);
+    measure_cells(mesh);
+  });
+  return mesh;
+}
+
+}  // namespace vorocrust

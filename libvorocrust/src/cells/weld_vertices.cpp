@@ -1,0 +1,185 @@
+#include "cells/weld_vertices.hpp"
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "cells/union_find.hpp"
+
+namespace vorocrust::cells {
+namespace {
+
+constexpr double kRelativeTolerance = 1e-9;
+
+double tolerance(const Point& vertex, const Point& seed) {
+  return kRelativeTolerance * std::max((vertex - seed).norm(), 1.0);
+}
+
+// Unites each vertex of cell c's face toward cell d with its nearest counterpart on d's face
+// toward c, when they are within tolerance.
+void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
+                        const std::vector<std::int32_t>& cell_of_seed, const Frame& frame,
+                        const std::vector<std::size_t>& first, UnionFind& sets, std::size_t c) {
+  const RawCell& cell = cells[c];
+  const Point& seed = frame.normalized[cell_seeds[c]];
+  for (std::size_t f = 0; f < cell.num_faces(); ++f) {
+    const std::int32_t n = cell.neighbours[f];
+    if (n < 0 || cell_of_seed[static_cast<std::size_t>(n)] <= static_cast<std::int32_t>(c)) continue;
+    const auto d = static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)]);
+    const RawCell& other = cells[d];
+    const auto it = std::find(other.neighbours.begin(), other.neighbours.end(), static_cast<std::int32_t>(cell_seeds[c]));
+    if (it == other.neighbours.end()) continue;  // a face only one side sees: degenerate, left to the sweep
+    const auto g = static_cast<std::size_t>(it - other.neighbours.begin());
+    const std::uint32_t* mine = cell.cycles.data() + cell.starts[f];
+    const std::uint32_t* theirs = other.cycles.data() + other.starts[g];
+    const std::size_t size = cell.starts[f + 1] - cell.starts[f], other_size = other.starts[g + 1] - other.starts[g];
+    const auto unite = [&](std::uint32_t u, std::uint32_t w) {
+      sets.unite(static_cast<std::uint32_t>(first[c] + u), static_cast<std::uint32_t>(first[d] + w));
+    };
+    // As a rule the two cycles are the same points run in opposite directions: pair them off
+    // from the counterpart of the first, checking each pair.
+    if (size == other_size) {
+      const Point& u0 = cell.vertices[mine[0]];
+      std::size_t at = 0;
+      for (std::size_t m = 1; m < size; ++m) {
+        if ((other.vertices[theirs[m]] - u0).squaredNorm() < (other.vertices[theirs[at]] - u0).squaredNorm()) at = m;
+      }
+      bool paired = true;
+      for (std::size_t k = 0; k < size && paired; ++k) {
+        const Point& u = cell.vertices[mine[k]];
+        paired = (other.vertices[theirs[(at + size - k) % size]] - u).norm() <= tolerance(u, seed);
+      }
+      if (paired) {
+        for (std::size_t k = 0; k < size; ++k) unite(mine[k], theirs[(at + size - k) % size]);
+        continue;
+      }
+    }
+    // Otherwise (a degenerate vertex resolved differently on each side) each to its nearest.
+    for (std::size_t k = 0; k < size; ++k) {
+      const Point& u = cell.vertices[mine[k]];
+      double best = tolerance(u, seed);
+      std::uint32_t match = UINT32_MAX;
+      for (std::size_t m = 0; m < other_size; ++m) {
+        const double dist = (other.vertices[theirs[m]] - u).norm();
+        if (dist <= best) best = dist, match = theirs[m];
+      }
+      if (match != UINT32_MAX) unite(mine[k], match);
+    }
+  }
+}
+
+// Unites the remaining distinct points within tolerance of each other: sorted by x, each is
+// compared with those following it within the largest tolerance.
+void unite_close_points(const std::vector<Point>& position, const std::vector<double>& tol, UnionFind& sets) {
+  std::vector<std::uint32_t> roots;
+  for (std::uint32_t i = 0; i < position.size(); ++i) {
+    if (sets.find(i) == i) roots.push_back(i);
+  }
+  tbb::parallel_sort(roots.begin(), roots.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return position[a].x() < position[b].x() || (position[a].x() == position[b].x() && a < b);
+  });
+  double reach = 0;
+  for (std::uint32_t r : roots) reach = std::max(reach, tol[r]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, roots.size(), 4096), [&](const auto& range) {
+    for (std::size_t k = range.begin(); k < range.end(); ++k) {
+      const std::uint32_t a = roots[k];
+      for (std::size_t j = k + 1; j < roots.size() && position[roots[j]].x() - position[a].x() <= reach; ++j) {
+        const std::uint32_t b = roots[j];
+        if ((position[a] - position[b]).norm() <= std::max(tol[a], tol[b])) sets.unite(a, b);
+      }
+    }
+  });
+}
+
+// The point equidistant from `generators` (least squares beyond four), or `fallback` when they
+// do not pin it down within `limit`.
+Point circumcentre(const Index* generators, std::size_t count, const std::vector<Point>& seeds, const Point& fallback,
+                   double limit) {
+  if (count < 4) return fallback;
+  const Point& g0 = seeds[generators[0]];
+  Point x;
+  if (count == 4) {
+    const Point a = seeds[generators[1]] - g0, b = seeds[generators[2]] - g0, c = seeds[generators[3]] - g0;
+    const Point bc = b.cross(c), ca = c.cross(a), ab = a.cross(b);
+    x = (a.squaredNorm() * bc + b.squaredNorm() * ca + c.squaredNorm() * ab) / (2 * a.dot(bc));
+  } else {
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    for (std::size_t k = 1; k < count; ++k) {
+      const Eigen::Vector3d a = seeds[generators[k]] - g0;
+      normal += a * a.transpose();
+      rhs += 0.5 * a.squaredNorm() * a;
+    }
+    x = normal.ldlt().solve(rhs);
+  }
+  const Point p = g0 + x;
+  return p.allFinite() && (p - fallback).norm() <= limit ? p : fallback;
+}
+
+}  // namespace
+
+WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
+                             const std::vector<std::int32_t>& cell_of_seed, const Frame& frame) {
+  WeldedVertices w;
+  w.first_instance.resize(cells.size() + 1, 0);
+  for (std::size_t c = 0; c < cells.size(); ++c) w.first_instance[c + 1] = w.first_instance[c] + cells[c].vertices.size();
+  const std::size_t instances = w.first_instance.back();
+
+  std::vector<Point> position(instances);
+  std::vector<double> tol(instances);
+  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
+    const Point& seed = frame.normalized[cell_seeds[c]];
+    for (std::size_t v = 0; v < cells[c].vertices.size(); ++v) {
+      position[w.first_instance[c] + v] = cells[c].vertices[v];
+      tol[w.first_instance[c] + v] = tolerance(cells[c].vertices[v], seed);
+    }
+  });
+
+  UnionFind sets(instances);
+  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
+    unite_across_faces(cells, cell_seeds, cell_of_seed, frame, w.first_instance, sets, c);
+  });
+  unite_close_points(position, tol, sets);
+
+  // Points numbered by their first instance, which is their set's root.
+  std::vector<std::uint32_t> root(instances);
+  tbb::parallel_for(std::size_t{0}, instances, [&](std::size_t i) { root[i] = sets.find(static_cast<std::uint32_t>(i)); });
+  std::vector<Index> label(instances, 0);
+  Index points = 0;
+  for (std::size_t i = 0; i < instances; ++i) {
+    if (root[i] == i) label[i] = points++;
+  }
+  w.point_of.resize(instances);
+  tbb::parallel_for(std::size_t{0}, instances, [&](std::size_t i) { w.point_of[i] = label[root[i]]; });
+
+  w.points.resize(points);
+  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
+    const RawCell& cell = cells[c];
+    // The seeds around each vertex: the cell's own, then those across the faces at it.
+    const std::size_t n = cell.vertices.size();
+    std::vector<std::uint32_t> start(n + 2, 0);
+    for (std::uint32_t v : cell.cycles) ++start[v + 2];
+    for (std::size_t v = 0; v < n; ++v) start[v + 2] += start[v + 1] + 1;
+    std::vector<Index> around(cell.cycles.size() + n);
+    for (std::size_t v = 0; v < n; ++v) around[start[v + 1]++] = cell_seeds[c];
+    for (std::size_t f = 0; f < cell.num_faces(); ++f) {
+      for (std::uint32_t k = cell.starts[f]; k < cell.starts[f + 1]; ++k) {
+        around[start[cell.cycles[k] + 1]++] = static_cast<Index>(cell.neighbours[f]);
+      }
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+      const std::size_t i = w.first_instance[c] + v;
+      if (root[i] != i) continue;
+      const Point at = frame.centre + frame.scale * cell.vertices[v];
+      w.points[label[i]] = circumcentre(around.data() + start[v], start[v + 1] - start[v], frame.original, at,
+                                        10 * tol[i] * frame.scale);
+    }
+  });
+  return w;
+}
+
+}  // namespace vorocrust::cells

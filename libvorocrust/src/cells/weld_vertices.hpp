@@ -1,0 +1,44 @@
+// cells/weld_vertices.hpp — one point per Voronoi vertex, whichever cells have it.
+//
+// weld_vertices(cells, cell_seeds, cell_of_seed, frame) numbers the vertices of every raw cell as
+// instances, cell after cell, and makes instances closer than their tolerance one point. The
+// tolerance of an instance is 1e-9 * max(R, 1) in the frame's units (seed spacing), R being its
+// distance to its cell's seed, the radius of its empty sphere: far above Voro++'s 1e-11, far below
+// any edge that is not an artefact of a degenerate vertex. Counterparts on the two sides of a
+// face shared by two cells are united first, then all remaining points within tolerance of each
+// other, by a sweep in x; the unions are transitive, so every cell sees one point for a cluster.
+// Points are numbered in the order of their first instance.
+//
+// A point is placed at the circumcentre of the seeds around one of its instances (its cell's
+// seed and the seeds across the faces at it), computed from the original seed coordinates, so
+// that it is equidistant from them up to round-off; when those seeds are too nearly coplanar for
+// that (the circumcentre strays by more than ten tolerances from the instance) it stays at the
+// instance.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cells/voronoi_cells.hpp"
+
+namespace vorocrust::cells {
+
+// The normalized frame in which cells are computed: normalized = (original - centre) / scale.
+struct Frame {
+  Point centre = Point::Zero();
+  double scale = 1;
+  std::vector<Point> original;    // seed positions as given
+  std::vector<Point> normalized;  // the same in the frame
+};
+
+struct WeldedVertices {
+  std::vector<std::size_t> first_instance;  // per cell, then the total: cell c's vertex v is
+                                            // instance first_instance[c] + v
+  std::vector<Index> point_of;              // per instance
+  std::vector<Point> points;                // original coordinates
+};
+
+WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
+                             const std::vector<std::int32_t>& cell_of_seed, const Frame& frame);
+
+}  // namespace vorocrust::cells

@@ -1,0 +1,175 @@
+#include "vorocrust/write_openfoam.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <numeric>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "vorocrust/atomic_file.hpp"
+#include "vorocrust/error.hpp"
+
+namespace vorocrust {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string region_name(std::int32_t region) {
+  if (region == kOutsideRegion) return "outside";
+  return region > 0 ? "material" + std::to_string(region) : "region_minus" + std::to_string(-static_cast<std::int64_t>(region));
+}
+
+std::string header(const char* cls, const char* location, const char* object, const std::string& note = "") {
+  std::string h = "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       ";
+  h += cls;
+  h += ";\n";
+  if (!note.empty()) h += "    note        \"" + note + "\";\n";
+  h += "    location    \"";
+  h += location;
+  h += "\";\n    object      ";
+  h += object;
+  h += ";\n}\n\n";
+  return h;
+}
+
+struct Patch {
+  std::string name;
+  std::size_t start = 0, size = 0;
+};
+
+// Faces in OpenFOAM's order, and the patches of the boundary ones.
+struct Ordering {
+  std::vector<std::size_t> faces;
+  std::size_t internal = 0;
+  std::vector<Patch> patches;
+};
+
+Ordering order_faces(const VoronoiMesh& mesh) {
+  Ordering o;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (mesh.faces[f].neighbour != kNoCell) o.faces.push_back(f);
+  }
+  std::sort(o.faces.begin(), o.faces.end(), [&](std::size_t a, std::size_t b) {
+    const VoronoiFace &fa = mesh.faces[a], &fb = mesh.faces[b];
+    return std::tie(fa.owner, fa.neighbour) < std::tie(fb.owner, fb.neighbour);
+  });
+  o.internal = o.faces.size();
+  std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::size_t>> by_pair;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const VoronoiFace& face = mesh.faces[f];
+    if (face.neighbour == kNoCell) by_pair[{face.regions.back, face.regions.front}].push_back(f);
+  }
+  for (const auto& [pair, faces] : by_pair) {
+    o.patches.push_back({region_name(pair.first) + "_to_" + region_name(pair.second), o.faces.size(), faces.size()});
+    o.faces.insert(o.faces.end(), faces.begin(), faces.end());
+  }
+  return o;
+}
+
+// Appends formatted text, for the big lists.
+template <class... Args>
+void append(std::string& out, const char* format, Args... args) {
+  char buffer[128];
+  const int n = std::snprintf(buffer, sizeof buffer, format, args...);
+  out.append(buffer, static_cast<std::size_t>(n));
+}
+
+void write_lists(const VoronoiMesh& mesh, const Ordering& o, const fs::path& poly) {
+  const std::string note = "nPoints:" + std::to_string(mesh.points.size()) + "  nCells:" + std::to_string(mesh.cells.size()) +
+                           "  nFaces:" + std::to_string(o.faces.size()) + "  nInternalFaces:" + std::to_string(o.internal);
+  std::string text = header("vectorField", "constant/polyMesh", "points");
+  append(text, "%zu\n(\n", mesh.points.size());
+  for (const Point& p : mesh.points) append(text, "(%.17g %.17g %.17g)\n", p.x(), p.y(), p.z());
+  text += ")\n";
+  write_file_atomically(poly / "points", text);
+
+  text = header("faceList", "constant/polyMesh", "faces");
+  append(text, "%zu\n(\n", o.faces.size());
+  for (std::size_t f : o.faces) {
+    const std::vector<Index>& polygon = mesh.faces[f].points;
+    append(text, "%zu(", polygon.size());
+    for (std::size_t k = 0; k < polygon.size(); ++k) append(text, k ? " %u" : "%u", polygon[k]);
+    text += ")\n";
+  }
+  text += ")\n";
+  write_file_atomically(poly / "faces", text);
+
+  text = header("labelList", "constant/polyMesh", "owner", note);
+  append(text, "%zu\n(\n", o.faces.size());
+  for (std::size_t f : o.faces) append(text, "%d\n", mesh.faces[f].owner);
+  text += ")\n";
+  write_file_atomically(poly / "owner", text);
+
+  text = header("labelList", "constant/polyMesh", "neighbour", note);
+  append(text, "%zu\n(\n", o.internal);
+  for (std::size_t k = 0; k < o.internal; ++k) append(text, "%d\n", mesh.faces[o.faces[k]].neighbour);
+  text += ")\n";
+  write_file_atomically(poly / "neighbour", text);
+}
+
+void write_boundary_and_zones(const VoronoiMesh& mesh, const Ordering& o, const fs::path& poly) {
+  std::string text = header("polyBoundaryMesh", "constant/polyMesh", "boundary");
+  append(text, "%zu\n(\n", o.patches.size());
+  for (const Patch& p : o.patches) {
+    text += "    " + p.name + "\n    {\n        type            patch;\n";
+    append(text, "        nFaces          %zu;\n        startFace       %zu;\n    }\n", p.size, p.start);
+  }
+  text += ")\n";
+  write_file_atomically(poly / "boundary", text);
+
+  std::map<std::int32_t, std::vector<std::size_t>> zones;
+  for (std::size_t c = 0; c < mesh.cells.size(); ++c) zones[mesh.cells[c].region].push_back(c);
+  text = header("regIOobject", "constant/polyMesh", "cellZones");
+  append(text, "%zu\n(\n", zones.size());
+  for (const auto& [region, cells] : zones) {
+    text += region_name(region) + "\n{\n    type cellZone;\n    cellLabels List<label>\n";
+    append(text, "%zu\n(\n", cells.size());
+    for (std::size_t c : cells) append(text, "%zu\n", c);
+    text += ")\n;\n}\n";
+  }
+  text += ")\n";
+  write_file_atomically(poly / "cellZones", text);
+}
+
+// The least a case needs for OpenFOAM's utilities (checkMesh, foamToVTK, the solvers' setup).
+void write_system(const fs::path& system) {
+  write_file_atomically(system / "controlDict",
+                        header("dictionary", "system", "controlDict") +
+                            "application     laplacianFoam;\nstartFrom       startTime;\nstartTime       0;\n"
+                            "stopAt          endTime;\nendTime         1;\ndeltaT          1;\n"
+                            "writeControl    timeStep;\nwriteInterval   1;\npurgeWrite      0;\n"
+                            "writeFormat     ascii;\nwritePrecision  17;\nwriteCompression off;\n"
+                            "timeFormat      general;\ntimePrecision   6;\nrunTimeModifiable false;\n");
+  write_file_atomically(system / "fvSchemes",
+                        header("dictionary", "system", "fvSchemes") +
+                            "ddtSchemes\n{\n    default         steadyState;\n}\n"
+                            "gradSchemes\n{\n    default         Gauss linear;\n}\n"
+                            "divSchemes\n{\n    default         none;\n}\n"
+                            "laplacianSchemes\n{\n    default         Gauss linear corrected;\n}\n"
+                            "interpolationSchemes\n{\n    default         linear;\n}\n"
+                            "snGradSchemes\n{\n    default         corrected;\n}\n");
+  write_file_atomically(system / "fvSolution", header("dictionary", "system", "fvSolution") +
+                                                   "solvers\n{\n}\n\nSIMPLE\n{\n    nNonOrthogonalCorrectors 0;\n}\n");
+}
+
+void make_folder(const fs::path& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) throw Error(Error::Kind::Output, "cannot create the folder: " + ec.message(), {.file = dir.string()});
+}
+
+}  // namespace
+
+void write_openfoam_case(const VoronoiMesh& mesh, const std::filesystem::path& case_dir) {
+  const fs::path poly = case_dir / "constant" / "polyMesh", system = case_dir / "system";
+  make_folder(poly);
+  make_folder(system);
+  const Ordering o = order_faces(mesh);
+  write_lists(mesh, o, poly);
+  write_boundary_and_zones(mesh, o, poly);
+  write_system(system);
+}
+
+}  // namespace vorocrust

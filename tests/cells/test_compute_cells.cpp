@@ -1,0 +1,137 @@
+// The cells stage on synthetic seed sets: closed convex cells, every interior face once and
+// shared by exactly its two cells, volumes adding up to what the boundary encloses, faces on the
+// bisectors of their seeds, degenerate lattices welded into cubes, independence of threads.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "cells/mesh_checks.hpp"
+#include "cells/seed_sets.hpp"
+#include "vorocrust/cells.hpp"
+#include "vorocrust/error.hpp"
+
+namespace vorocrust {
+namespace {
+
+using namespace test;
+
+TEST(Cells, JitteredLatticeBall) {
+  const auto seeds = test::lattice_seeds(12, 0.3, test::ball_region(Point(5.5, 5.5, 5.5), 4.2));
+  const VoronoiMesh m = compute_cells(seeds);
+  std::size_t materials = 0;
+  for (const Seed& s : seeds) materials += s.region == 1;
+  EXPECT_EQ(m.cells.size(), materials);
+  expect_valid(m, seeds);
+  expect_empty_spheres(m, seeds);
+  // Near the ball's volume: the cells of the seeds inside it.
+  EXPECT_NEAR(total_volume(m), 4.0 / 3 * M_PI * std::pow(4.2, 3), 0.1 * 4.0 / 3 * M_PI * std::pow(4.2, 3));
+  for (const VoronoiCell& c : m.cells) {
+    EXPECT_GT(c.volume, 0);
+    EXPECT_LT((c.centroid - seeds[c.seed].position).norm(), 0.5);
+  }
+}
+
+TEST(Cells, TwoMaterialsSplitAtAPlane) {
+  const auto seeds = test::lattice_seeds(10, 0.25, test::split_box_region(1.5, 7.5, 4.5), 7);
+  const VoronoiMesh m = compute_cells(seeds);
+  expect_valid(m, seeds);
+  std::map<std::pair<std::int32_t, std::int32_t>, std::size_t> by_pair;
+  for (const VoronoiFace& f : m.faces) {
+    ++by_pair[std::make_pair(f.regions.back, f.regions.front)];
+    // Faces between the two materials are interior faces.
+    if (f.regions.front != 0) {
+      EXPECT_NE(f.neighbour, kNoCell);
+    }
+  }
+  // Both materials meet the outside, and each other.
+  EXPECT_GT(by_pair[std::make_pair(1, 0)], 0u);
+  EXPECT_GT(by_pair[std::make_pair(2, 0)], 0u);
+  EXPECT_GT(by_pair[std::make_pair(1, 2)], 0u);
+  // Only material 2 asked for: material 1's seeds bound it like outside seeds do.
+  CellsOptions only2;
+  only2.materials = {2};
+  const VoronoiMesh m2 = compute_cells(seeds, only2);
+  expect_valid(m2, seeds);
+  for (const VoronoiCell& c : m2.cells) EXPECT_EQ(c.region, 2);
+}
+
+// An exact lattice: every Voronoi vertex is shared by eight cospherical seeds, which Voro++
+// resolves with tiny edges and faces one way in one cell and another way in the next. Welded,
+// every cell is the unit cube.
+TEST(Cells, DegenerateLatticeWeldsIntoCubes) {
+  for (double jitter : {0.0, 1e-13}) {
+    const auto seeds = test::lattice_seeds(9, jitter, test::ball_region(Point(4, 4, 4), 3.1), 3);
+    const VoronoiMesh m = compute_cells(seeds);
+    expect_valid(m, seeds);
+    for (const VoronoiCell& c : m.cells) {
+      ASSERT_EQ(c.faces.size(), 6u) << "jitter " << jitter;
+      for (Index f : c.faces) ASSERT_EQ(m.faces[f].points.size(), 4u);
+      EXPECT_NEAR(c.volume, 1, 1e-9);
+    }
+    std::set<Index> used;
+    for (const VoronoiFace& f : m.faces) used.insert(f.points.begin(), f.points.end());
+    EXPECT_EQ(used.size(), m.points.size()) << "every point belongs to a face";
+  }
+}
+
+TEST(Cells, SameResultForOneAndTwoThreads) {
+  const auto seeds = test::lattice_seeds(32, 0.3, test::ball_region(Point(15.5, 15.5, 15.5), 14.6), 5);
+  CellsOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const VoronoiMesh a = compute_cells(seeds, one), b = compute_cells(seeds, two);
+  ASSERT_GT(a.cells.size(), 8192u) << "more than one slab";
+  ASSERT_EQ(a.points, b.points);
+  ASSERT_EQ(a.faces.size(), b.faces.size());
+  for (std::size_t f = 0; f < a.faces.size(); ++f) {
+    ASSERT_EQ(a.faces[f].points, b.faces[f].points);
+    ASSERT_EQ(a.faces[f].owner, b.faces[f].owner);
+    ASSERT_EQ(a.faces[f].neighbour, b.faces[f].neighbour);
+  }
+  ASSERT_EQ(a.cells.size(), b.cells.size());
+  for (std::size_t c = 0; c < a.cells.size(); ++c) {
+    ASSERT_EQ(a.cells[c].faces, b.cells[c].faces);
+    ASSERT_EQ(a.cells[c].volume, b.cells[c].volume);
+  }
+  expect_valid(a, seeds);
+}
+
+TEST(Cells, MaterialCellsMustBeEnclosedBySeeds) {
+  // The whole lattice is material: its outer cells reach the container's walls.
+  const auto seeds = test::lattice_seeds(5, 0.2, [](const Point&) { return std::int32_t{1}; });
+  try {
+    compute_cells(seeds);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::InvalidGeometry);
+    EXPECT_NE(std::string(e.what()).find("cell of seed 0 is not bounded by seeds"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Cells, BadSeedSetsAreErrors) {
+  auto seeds = test::lattice_seeds(5, 0.2, test::ball_region(Point(2, 2, 2), 1.2));
+  const auto expect_error = [](const std::vector<Seed>& s, const std::string& phrase) {
+    try {
+      compute_cells(s);
+      FAIL() << "no error for " << phrase;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), Error::Kind::InvalidGeometry);
+      EXPECT_NE(std::string(e.what()).find(phrase), std::string::npos) << e.what();
+    }
+  };
+  auto nan = seeds;
+  nan[3].position.y() = std::nan("");
+  expect_error(nan, "seed 3 has a coordinate that is not a finite number");
+  auto twin = seeds;
+  twin.push_back(twin[62]);
+  expect_error(twin, "seeds 62 and 125 are at the same place");
+  auto none = seeds;
+  for (Seed& s : none) s.region = 0;
+  expect_error(none, "no seed has a material region");
+  expect_error({}, "no seed has a material region");
+}
+
+}  // namespace
+}  // namespace vorocrust

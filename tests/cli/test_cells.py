@@ -1,0 +1,209 @@
+#!/usr/bin/env python3
+"""`vorocrust cells` checked by the real tools: VTK's own reader (python3-vtk9) on mesh.vtu and
+OpenFOAM's checkMesh on case/; rebuilding from a run's seeds.csv; bad seed files.
+
+Run by CTest as: /usr/bin/python3 test_cells.py VOROCRUST_BINARY MODELS_DIR
+"""
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import vtk
+
+BINARY, MODELS = sys.argv[1:3]
+del sys.argv[1:3]
+
+CHECKMESH = shutil.which("checkMesh") or "/usr/bin/checkMesh"
+
+
+def run(*args):
+    return subprocess.run([BINARY, *args], capture_output=True, text=True, timeout=600)
+
+
+def lattice_seeds(path, n, jitter, label, rng_seed=1):
+    """n^3 seeds on the unit lattice moved by up to `jitter`, labelled label(x, y, z); returns the labels."""
+    rng = random.Random(rng_seed)
+    labels = []
+    with open(path, "w") as f:
+        f.write("x,y,z,label,radius,kind\n")
+        for i in range(n):
+            for j in range(n):
+                for k in range(n):
+                    p = [c + rng.uniform(-jitter, jitter) for c in (i, j, k)]
+                    lab = label(*p)
+                    labels.append(lab)
+                    f.write("%.17g,%.17g,%.17g,%d,0.5,%s\n" % (*p, lab, "interior" if lab else "outside"))
+    return labels
+
+
+def in_ball(c, r):
+    return lambda x, y, z: 1 if (x - c) ** 2 + (y - c) ** 2 + (z - c) ** 2 < r * r else 0
+
+
+def split_ball(c, r):
+    return lambda x, y, z: (1 if x < c else 2) if (x - c) ** 2 + (y - c) ** 2 + (z - c) ** 2 < r * r else 0
+
+
+def read_vtu(path):
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def cell_array(grid, name):
+    a = grid.GetCellData().GetArray(name)
+    return [a.GetValue(i) for i in range(a.GetNumberOfTuples())]
+
+
+def vtk_cell_volumes(grid):
+    f = vtk.vtkCellSizeFilter()
+    f.SetInputData(grid)
+    f.ComputeVolumeOn()
+    f.Update()
+    return cell_array(f.GetOutput(), "Volume")
+
+
+def vtk_boundary_volume(grid):
+    """The volume VTK finds inside the grid's outer surface (its faces used by one cell only)."""
+    surface = vtk.vtkDataSetSurfaceFilter()
+    surface.SetInputData(grid)
+    triangles = vtk.vtkTriangleFilter()
+    triangles.SetInputConnection(surface.GetOutputPort())
+    mass = vtk.vtkMassProperties()
+    mass.SetInputConnection(triangles.GetOutputPort())
+    mass.Update()
+    return mass.GetVolume()
+
+
+def check_mesh(case):
+    env = dict(os.environ, WM_PROJECT_DIR="/usr/share/openfoam")
+    r = subprocess.run([CHECKMESH, "-case", case], capture_output=True, text=True, timeout=600, env=env)
+    m = re.search(r"Mesh non-orthogonality Max: (\S+) average: (\S+)", r.stdout)
+    return r, (float(m.group(1)), float(m.group(2))) if m else None
+
+
+class Cells(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix="vorocrust-cells-")
+
+    def tearDown(self):
+        shutil.rmtree(self.dir, ignore_errors=True)
+
+    def path(self, *names):
+        return os.path.join(self.dir, *names)
+
+    def cells(self, seeds, out, *options):
+        r = run("cells", seeds, "-o", out, *options)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(r.stderr, "")
+        return r
+
+    def test_vtk_reads_the_polyhedra_and_their_volumes(self):
+        # Two materials in a ball, well-shaped cells.
+        labels = lattice_seeds(self.path("seeds.csv"), 12, 0.3, split_ball(5.5, 4.2), 2)
+        self.cells(self.path("seeds.csv"), self.path("out"))
+        grid = read_vtu(self.path("out", "mesh.vtu"))
+        material = [i for i, lab in enumerate(labels) if lab > 0]
+        self.assertEqual(grid.GetNumberOfCells(), len(material))
+        self.assertEqual({grid.GetCellType(c) for c in range(grid.GetNumberOfCells())}, {vtk.VTK_POLYHEDRON})
+        self.assertEqual(cell_array(grid, "seed"), material)
+        self.assertEqual(cell_array(grid, "material"), [labels[s] for s in material])
+        library = cell_array(grid, "volume")
+        measured = vtk_cell_volumes(grid)
+        for c, (a, b) in enumerate(zip(library, measured)):
+            self.assertAlmostEqual(a, b, delta=1e-9 * a, msg="cell %d" % c)
+        total = sum(library)
+        self.assertAlmostEqual(sum(measured), total, delta=1e-9 * total)
+        self.assertAlmostEqual(vtk_boundary_volume(grid), total, delta=1e-9 * total)
+        print("\n  VTK: %d polyhedra, volume %.12g (library %.12g)" % (len(measured), sum(measured), total))
+
+    def test_vtk_reads_near_degenerate_cells(self):
+        # A lattice moved by 1e-3: eight nearly cospherical seeds at every vertex, so faces carry
+        # edges a thousandth of their size. VTK's own triangulation of such polygons drops some
+        # sliver triangles, so its volumes are only close.
+        labels = lattice_seeds(self.path("seeds.csv"), 10, 1e-3, in_ball(4.5, 3.6), 1)
+        self.cells(self.path("seeds.csv"), self.path("out"))
+        grid = read_vtu(self.path("out", "mesh.vtu"))
+        self.assertEqual(grid.GetNumberOfCells(), sum(1 for lab in labels if lab))
+        library, measured = cell_array(grid, "volume"), vtk_cell_volumes(grid)
+        for a, b in zip(library, measured):
+            self.assertAlmostEqual(a, b, delta=1e-4 * a)
+            self.assertAlmostEqual(a, 1, delta=1e-2)
+
+    def test_checkmesh_passes_with_orthogonal_faces(self):
+        # Seeds at their cells' centroids (a lattice moved by 1e-3): the links between cell
+        # centres, which checkMesh measures against, are the seed links the faces are orthogonal to.
+        lattice_seeds(self.path("seeds.csv"), 10, 1e-3, in_ball(4.5, 3.6), 1)
+        self.cells(self.path("seeds.csv"), self.path("out"), "--format", "openfoam")
+        self.assertFalse(os.path.exists(self.path("out", "mesh.vtu")))
+        r, (max_angle, mean_angle) = check_mesh(self.path("out", "case"))
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("\nMesh OK.", r.stdout)
+        self.assertIn("material1_to_outside", r.stdout)
+        self.assertLess(max_angle, 1.0)
+        print("\n  checkMesh: Mesh OK, non-orthogonality max %.4g deg, average %.4g deg" % (max_angle, mean_angle))
+
+    def test_checkmesh_passes_on_two_materials(self):
+        # Jittered seeds: true Voronoi faces, orthogonal to the seed links, but the cell centres
+        # are off the seeds, so checkMesh (measuring against centre links) finds some
+        # non-orthogonality; every other check passes.
+        lattice_seeds(self.path("seeds.csv"), 12, 0.3, split_ball(5.5, 4.2), 2)
+        self.cells(self.path("seeds.csv"), self.path("out"), "--format", "openfoam", "--threads", "1")
+        r, (max_angle, mean_angle) = check_mesh(self.path("out", "case"))
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertIn("\nMesh OK.", r.stdout)
+        for patch in ("material1_to_outside", "material2_to_outside"):
+            self.assertRegex(r.stdout, r"\n\s+%s\s+\d+\s+\d+\s+ok" % patch)
+        for zone in ("material1", "material2"):
+            self.assertRegex(r.stdout, r"\n\s+%s\s+\d+\s+\d+" % zone)
+        self.assertLess(max_angle, 30)
+        print("\n  checkMesh (jitter 0.3): Mesh OK, non-orthogonality max %.4g deg, average %.4g deg" % (max_angle, mean_angle))
+
+    def test_rebuilding_a_runs_seeds_gives_the_same_mesh(self):
+        r = run("mesh", os.path.join(MODELS, "cgal_joint.off"), "-o", self.path("run"), "--stop-after", "surface", "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        seeds = self.path("run", "seeds.csv")
+        summary = self.cells(seeds, self.path("one"), "--threads", "1").stdout
+        self.cells(seeds, self.path("two"), "--threads", "2", "-q")
+        for name in ("mesh.vtu", "case/constant/polyMesh/points", "case/constant/polyMesh/faces",
+                     "case/constant/polyMesh/owner", "case/constant/polyMesh/neighbour", "case/constant/polyMesh/boundary"):
+            with open(self.path("one", name), "rb") as a, open(self.path("two", name), "rb") as b:
+                self.assertEqual(a.read(), b.read(), name)
+        with open(seeds) as f:
+            inside = sum(1 for line in f.readlines()[1:] if line.split(",")[3] == "1")
+        self.assertRegex(summary, r"^14092 seeds: %d cells, " % inside)
+        grid = read_vtu(self.path("one", "mesh.vtu"))
+        self.assertEqual(grid.GetNumberOfCells(), inside)
+        total = sum(cell_array(grid, "volume"))
+        self.assertAlmostEqual(vtk_boundary_volume(grid), total, delta=1e-9 * total)
+
+    def test_bad_seed_files(self):
+        bad = self.path("bad.csv")
+        with open(bad, "w") as f:
+            f.write("x,y,z,label,radius,kind\n0,0,0,1,0.5,interior\n0,0,zero,1,0.5,interior\n")
+        r = run("cells", bad, "-o", self.path("out"))
+        self.assertEqual(r.returncode, 3, r.stderr)
+        self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+        self.assertIn(bad + ":3: z is not a finite number: 'zero'", r.stderr)
+
+        r = run("cells", self.path("missing.csv"), "-o", self.path("out"))
+        self.assertEqual(r.returncode, 3, r.stderr)
+
+        # All material: the outer cells reach past every seed.
+        lattice_seeds(self.path("all.csv"), 4, 0.2, lambda x, y, z: 1)
+        r = run("cells", self.path("all.csv"), "-o", self.path("out"))
+        self.assertEqual(r.returncode, 4, r.stderr)
+        self.assertIn("cell of seed 0 is not bounded by seeds", r.stderr)
+
+        r = run("cells", self.path("all.csv"), "-o", self.path("out"), "--format", "stl")
+        self.assertEqual(r.returncode, 2, r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
