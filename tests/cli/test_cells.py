@@ -176,8 +176,9 @@ class Cells(unittest.TestCase):
             with open(self.path("one", name), "rb") as a, open(self.path("two", name), "rb") as b:
                 self.assertEqual(a.read(), b.read(), name)
         with open(seeds) as f:
-            inside = sum(1 for line in f.readlines()[1:] if line.split(",")[3] == "1")
-        self.assertRegex(summary, r"^14092 seeds: %d cells, " % inside)
+            rows = [line.split(",") for line in f.readlines()[1:]]
+        inside = sum(1 for row in rows if row[3] == "1")
+        self.assertRegex(summary, r"^%d seeds: %d cells, " % (len(rows), inside))
         grid = read_vtu(self.path("one", "mesh.vtu"))
         self.assertEqual(grid.GetNumberOfCells(), inside)
         total = sum(cell_array(grid, "volume"))
