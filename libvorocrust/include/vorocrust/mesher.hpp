@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "vorocrust/balls.hpp"
+#include "vorocrust/cells.hpp"
 #include "vorocrust/progress.hpp"
 #include "vorocrust/quality.hpp"
 #include "vorocrust/seeds.hpp"
@@ -23,6 +24,16 @@ namespace vorocrust {
 // How far the pipeline runs: the protecting balls (2.3), the surface seeds and the surface mesh
 // (2.4), or the whole Voronoi mesh.
 enum class Stage { Balls, Surface, Cells };
+
+// How the volume away from the surface is seeded (paper 2.5, A.5):
+// - Random: maximal Poisson-disk sampling with L-Lipschitz radii grown from the surface seeds
+//   (dart throwing, then spoke darts), graded from the surface inward;
+// - Lattice: a cubic lattice of the local size, giving hex-dominant cells (paper Figure 5f);
+// - Cvt: Random, then Lloyd iterations moving interior seeds to their cell centroids while the
+//   surface seeds stay where they are (paper Figure 5d).
+enum class InteriorMode { Random, Lattice, Cvt };
+
+const char* to_string(InteriorMode mode) noexcept;
 
 struct MeshOptions {
   double lipschitz = 0.25;  // L < 1: how fast ball radii may vary
@@ -38,6 +49,8 @@ struct MeshOptions {
   // default while it costs more than it gives: the surface grows (sandia_torus: 9 216 faces to
   // 189 504) and the refinement with it.
   int smoothing_iterations = 0;
+  InteriorMode interior = InteriorMode::Random;
+  int cvt_iterations = 20;  // Lloyd iterations of InteriorMode::Cvt
   Stage stop_after = Stage::Cells;
   std::uint64_t seed = 0;  // random seed; equal seeds give equal meshes
   int threads = 0;         // 0 = all hardware threads
@@ -110,11 +123,13 @@ struct MeshResult {
   // The surface measured against the input as the paper's section 3 does (angles, triangle
   // quality, two-sided Hausdorff distance, topology).
   std::optional<SurfaceQuality> surface_quality;
+  // From Stage::Cells on: seeds holds the interior and outside seeds after the surface seeds,
+  // and cells the conforming Voronoi mesh of the material seeds.
+  VoronoiMesh cells;
 };
 
-// Runs the pipeline up to options.stop_after. The cells are not implemented yet: asking for them
-// throws Error(NotImplemented) — call with stop_after = Stage::Surface for the seeds and the
-// surface.
+// Runs the pipeline up to options.stop_after. Throws Error: Usage for options out of range,
+// Cancelled when progress returns false, InvalidGeometry when the input cannot be meshed.
 MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, const ProgressCallback& progress = {});
 
 }  // namespace vorocrust

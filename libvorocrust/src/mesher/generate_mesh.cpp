@@ -24,6 +24,16 @@ void MeshOptions::check() const {
   if (!(max_size > 0)) throw Error(Error::Kind::Usage, "--max-size must be positive, got " + std::to_string(max_size));
   if (threads < 0) throw Error(Error::Kind::Usage, "--threads must be 0 (all) or positive");
   if (smoothing_iterations < 0) throw Error(Error::Kind::Usage, "--smoothing-iterations must be 0 or positive");
+  if (cvt_iterations < 0) throw Error(Error::Kind::Usage, "--cvt-iterations must be 0 or positive");
+}
+
+const char* to_string(InteriorMode mode) noexcept {
+  switch (mode) {
+    case InteriorMode::Random: return "random";
+    case InteriorMode::Lattice: return "lattice";
+    case InteriorMode::Cvt: return "cvt";
+  }
+  return "?";
 }
 
 namespace {
