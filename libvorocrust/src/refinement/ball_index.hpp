@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "geometry/ball_tree.hpp"
 #include "refinement/surface_site.hpp"
 
 namespace vorocrust {
@@ -35,14 +36,15 @@ class BallIndex {
   // margin 0, the balls containing p (A.4). Only balls numbered `first` or later, if given.
   void reaching(StratumType type, const Point& p, double margin, std::vector<std::uint32_t>& out,
                 std::uint32_t first = 0) const;
+  // Whether some ball of any type holds p strictly inside.
+  bool covers(const Point& p) const;
   // Balls of `type` too large beside a ball (p, radius) for C3: r_q > radius + L |p - q|.
   void lipschitz_violators(StratumType type, const Point& p, double radius, double L,
                            std::vector<std::uint32_t>& out) const;
 
  private:
-  class Tree;
   std::vector<RefinedBall> balls_;
-  std::unique_ptr<Tree[]> trees_;  // one per stratum type
+  std::unique_ptr<BallTree[]> trees_;  // one per stratum type
 };
 
 }  // namespace vorocrust
