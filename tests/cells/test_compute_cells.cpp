@@ -5,10 +5,13 @@
 
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <random>
 #include <set>
 
 #include "cells/mesh_checks.hpp"
 #include "cells/seed_sets.hpp"
+#include "cells/voronoi_cells.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
 
@@ -131,6 +134,36 @@ TEST(Cells, BadSeedSetsAreErrors) {
   for (Seed& s : none) s.region = 0;
   expect_error(none, "no seed has a material region");
   expect_error({}, "no seed has a material region");
+}
+
+}  // namespace
+}  // namespace vorocrust
+
+namespace vorocrust {
+namespace {
+
+// The fallback for cells at odds with their neighbours gives the cells the containers give.
+TEST(RecomputeNearestFirst, AgreesWithTheContainersOnRandomSeeds) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(-3.0, 3.0);
+  std::vector<Point> positions(2000);
+  for (Point& p : positions) p = Point(unit(rng), unit(rng), unit(rng));
+  std::vector<Index> cell_seeds;
+  for (Index s = 0; s < positions.size(); ++s) {
+    if (positions[s].norm() < 2) cell_seeds.push_back(s);
+  }
+  const std::vector<cells::RawCell> by_containers = cells::compute_voronoi_cells(positions, cell_seeds);
+  std::vector<cells::RawCell> alone(cell_seeds.size());
+  std::vector<std::size_t> all(cell_seeds.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  cells::recompute_nearest_first(positions, cell_seeds, all, alone);
+  for (std::size_t c = 0; c < cell_seeds.size(); ++c) {
+    std::vector<std::int32_t> a = by_containers[c].neighbours, b = alone[c].neighbours;
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    ASSERT_EQ(a, b) << "cell " << c;
+    ASSERT_EQ(by_containers[c].vertices.size(), alone[c].vertices.size()) << "cell " << c;
+  }
 }
 
 }  // namespace

@@ -214,23 +214,40 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   arena.execute([&] {
     const cells::Frame frame = make_frame(seeds);
-    const std::vector<cells::RawCell> raw = cells::compute_voronoi_cells(frame.normalized, cell_seeds);
-    cells::WeldedVertices welded = cells::weld_vertices(raw, cell_seeds, cell_of_seed, frame);
-
-    Assembly assembly{seeds, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
-    std::vector<char> failed(raw.size(), 0);
-    tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
-      std::optional<CellFaces> f = cells::welded_faces(raw[c], welded.first_instance[c], welded.point_of);
-      if (f) assembly.faces[c] = std::move(*f);
-      else failed[c] = 1;
-    });
-    if (std::count(failed.begin(), failed.end(), 1)) {
-      fail_on_lowest(failed, cell_seeds, "is not closed after welding its degenerate vertices");
-    }
-    mesh.points = std::move(welded.points);
-    assembly.build(mesh, failed);
-    if (std::count(failed.begin(), failed.end(), 1)) {
-      fail_on_lowest(failed, cell_seeds, "and a neighbour see their common face differently after welding");
+    std::vector<cells::RawCell> raw = cells::compute_voronoi_cells(frame.normalized, cell_seeds);
+    // Cells at odds with a neighbour after welding are computed again, nearest planes first,
+    // together with their neighbours: which side is wrong is not known. Twice at most.
+    for (int attempt = 0;; ++attempt) {
+      cells::WeldedVertices welded = cells::weld_vertices(raw, cell_seeds, cell_of_seed, frame);
+      Assembly assembly{seeds, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
+      std::vector<char> failed(raw.size(), 0);
+      tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
+        std::optional<CellFaces> f = cells::welded_faces(raw[c], welded.first_instance[c], welded.point_of);
+        if (f) assembly.faces[c] = std::move(*f);
+        else failed[c] = 1;
+      });
+      const bool closed = std::count(failed.begin(), failed.end(), 1) == 0;
+      mesh = VoronoiMesh{};
+      mesh.points = std::move(welded.points);
+      if (closed) assembly.build(mesh, failed);
+      if (std::count(failed.begin(), failed.end(), 1) == 0) break;
+      if (attempt == 2) {
+        fail_on_lowest(failed, cell_seeds, closed ? "and a neighbour see their common face differently after welding"
+                                                  : "is not closed after welding its degenerate vertices");
+      }
+      std::vector<std::size_t> again;
+      for (std::size_t c = 0; c < raw.size(); ++c) {
+        if (!failed[c]) continue;
+        again.push_back(c);
+        for (std::int32_t n : raw[c].neighbours) {
+          if (n >= 0 && cell_of_seed[static_cast<std::size_t>(n)] != kNoCell) {
+            again.push_back(static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)]));
+          }
+        }
+      }
+      std::sort(again.begin(), again.end());
+      again.erase(std::unique(again.begin(), again.end()), again.end());
+      cells::recompute_nearest_first(frame.normalized, cell_seeds, again, raw);
     }
     drop_unused_points(mesh);
     measure_cells(mesh);

@@ -10,6 +10,7 @@
 #include <string>
 #include <voro++.hh>
 
+#include "refinement/point_cloud.hpp"
 #include "vorocrust/error.hpp"
 
 namespace vorocrust::cells {
@@ -57,6 +58,31 @@ struct SlabFailure {
   }
 };
 
+struct Scratch {
+  std::vector<double> xyz;
+  std::vector<int> faces, ids;
+};
+
+// A Voro++ cell of the seed at p as a RawCell.
+void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cell, Scratch& scratch) {
+  voro_cell.vertices(p.x(), p.y(), p.z(), scratch.xyz);
+  voro_cell.face_vertices(scratch.faces);
+  voro_cell.neighbors(scratch.ids);
+  const std::vector<double>& xyz = scratch.xyz;
+  const std::vector<int>& faces = scratch.faces;
+  cell.vertices.resize(xyz.size() / 3);
+  for (std::size_t v = 0; v < cell.vertices.size(); ++v) cell.vertices[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+  cell.neighbours.assign(scratch.ids.begin(), scratch.ids.end());
+  cell.starts.clear();
+  cell.cycles.clear();
+  // Voro++ lists each face clockwise seen from outside: reverse it.
+  for (std::size_t at = 0; at < faces.size(); at += static_cast<std::size_t>(faces[at]) + 1) {
+    cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
+    for (int k = faces[at]; k >= 1; --k) cell.cycles.push_back(static_cast<std::uint32_t>(faces[at + static_cast<std::size_t>(k)]));
+  }
+  cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
+}
+
 // A Voro++ container's box and grid.
 struct Box {
   Point lower, upper;
@@ -95,7 +121,7 @@ class SlabWorker {
           continue;
         }
         RawCell& cell = out[pending[k]];
-        extract(seed, cell);
+        extract(cell_, positions_[seed], cell, scratch_);
         // The empty sphere of every vertex must lie within the seeds the container holds.
         bool complete = true;
         for (const Point& v : cell.vertices) {
@@ -157,29 +183,10 @@ class SlabWorker {
     }
   }
 
-  void extract(Index seed, RawCell& cell) {
-    const Point& p = positions_[seed];
-    cell_.vertices(p.x(), p.y(), p.z(), xyz_);
-    cell_.face_vertices(faces_);
-    cell_.neighbors(ids_);
-    cell.vertices.resize(xyz_.size() / 3);
-    for (std::size_t v = 0; v < cell.vertices.size(); ++v) cell.vertices[v] = {xyz_[3 * v], xyz_[3 * v + 1], xyz_[3 * v + 2]};
-    cell.neighbours.assign(ids_.begin(), ids_.end());
-    cell.starts.clear();
-    cell.cycles.clear();
-    // Voro++ lists each face clockwise seen from outside: reverse it.
-    for (std::size_t at = 0; at < faces_.size(); at += static_cast<std::size_t>(faces_[at]) + 1) {
-      cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
-      for (int k = faces_[at]; k >= 1; --k) cell.cycles.push_back(static_cast<std::uint32_t>(faces_[at + static_cast<std::size_t>(k)]));
-    }
-    cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
-  }
-
   const std::vector<Point>& positions_;
   const Layout& layout_;
   voro::voronoicell_neighbor cell_;
-  std::vector<double> xyz_;
-  std::vector<int> faces_, ids_;
+  Scratch scratch_;
 };
 
 }  // namespace
@@ -220,6 +227,41 @@ std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, 
     throw Error(Error::Kind::InvalidGeometry, "Voro++ could not compute the cell of seed " + seed);
   }
   return out;
+}
+
+void recompute_nearest_first(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                             const std::vector<std::size_t>& which, std::vector<RawCell>& cells) {
+  using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
+  const Cloud cloud{&positions};
+  StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  Eigen::AlignedBox3d bounds;
+  for (const Point& p : positions) bounds.extend(p);
+  const double reach = bounds.diagonal().norm() + 1;
+  tbb::parallel_for(std::size_t{0}, which.size(), [&](std::size_t k) {
+    const Index seed = cell_seeds[which[k]];
+    const Point& p = positions[seed];
+    voro::voronoicell_neighbor cell;
+    cell.init(-reach, reach, -reach, reach, -reach, reach);
+    std::vector<std::uint32_t> near;
+    std::vector<double> distance2;
+    std::size_t cut = 0;  // seeds cut so far, nearest first
+    for (std::size_t wanted = 32;; wanted *= 2) {
+      wanted = std::min(wanted, positions.size());
+      near.resize(wanted);
+      distance2.resize(wanted);
+      const std::size_t found = tree.knnSearch(p.data(), wanted, near.data(), distance2.data());
+      for (; cut < found; ++cut) {
+        if (near[cut] == seed) continue;
+        const Point d = positions[near[cut]] - p;
+        cell.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(near[cut]));
+      }
+      // A seed at distance d cuts the cell only if d / 2 is below its farthest vertex, whose
+      // doubled distance Voro++'s max_radius_squared gives.
+      if (found == positions.size() || distance2[found - 1] > cell.max_radius_squared()) break;
+    }
+    Scratch scratch;
+    extract(cell, p, cells[which[k]], scratch);
+  });
 }
 
 }  // namespace vorocrust::cells

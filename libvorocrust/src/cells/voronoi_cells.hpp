@@ -37,4 +37,13 @@ struct RawCell {
 
 std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds);
 
+// Computes cells[k] again for each k in `which`, each alone: the planes of the other seeds cut it
+// nearest first, with no container. Voro++'s containers cut in the order of their grid blocks,
+// and where many seeds are nearly cospherical (the rule at VoroCrust's surface seeds) that order
+// can, rarely, leave a cell that misses a neighbour; cutting nearest first does not, and is used
+// on the cells the assembly finds at odds with their neighbours. A cell that reaches the initial
+// box (bigger than all seeds) keeps a wall face (< 0) as a neighbour.
+void recompute_nearest_first(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                             const std::vector<std::size_t>& which, std::vector<RawCell>& cells);
+
 }  // namespace vorocrust::cells
