@@ -21,7 +21,9 @@ struct MeshArgs {
   MeshOptions options;
   bool quiet = false;
   bool allow_self_intersections = false;
-  std::string stop_after;  // "" (everything) or "balls"
+  std::string stop_after;  // "" (everything), "balls" or "surface"
+  std::string interior = "random";
+  std::vector<std::string> formats{"vtu", "openfoam"};
   std::vector<std::string> command_line;
 };
 

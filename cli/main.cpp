@@ -62,6 +62,18 @@ int main(int argc, char** argv) {
   mesh_cmd->add_option("--smoothing-iterations", mesh.options.smoothing_iterations,
                        "Rounds of adaptive Loop subdivision inside smooth patches before refinement")
       ->capture_default_str();
+  mesh_cmd->add_option("--interior", mesh.interior,
+                       "Interior seeds: 'random' (Poisson-disk, graded from the surface inward), 'lattice' "
+                       "(cubic, hex-dominant cells), 'cvt' (random, then Lloyd iterations)")
+      ->check(CLI::IsMember({"random", "lattice", "cvt"}))
+      ->capture_default_str();
+  mesh_cmd->add_option("--cvt-iterations", mesh.options.cvt_iterations, "Lloyd iterations of --interior cvt")
+      ->capture_default_str();
+  mesh_cmd->add_option("--format", mesh.formats,
+                       "Volume mesh outputs, comma-separated: vtu (mesh.vtu), openfoam (case/)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"vtu", "openfoam"}))
+      ->capture_default_str();
   mesh_cmd->add_option("--stop-after", mesh.stop_after, "Stop after a stage and write its output: 'balls' (balls.csv, balls.vtk) or 'surface' "
                        "(also seeds.csv, surface.obj, surface.ply)")
       ->check(CLI::IsMember({"balls", "surface"}));

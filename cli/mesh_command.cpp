@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -23,14 +24,14 @@ int run_mesh(const MeshArgs& args) {
   RunReport report;
   report.command = args.command_line;
   report.inputs = args.inputs;
-  // The cells do not exist yet: a run goes as far as the surface (or the balls), writes what was
-  // made, and then says "not yet" unless that was all that was asked for.
   MeshOptions options = args.options;
   options.stop_after = args.stop_after == "balls"     ? Stage::Balls
                        : args.stop_after == "surface" ? Stage::Surface
                                                       : Stage::Cells;
+  options.interior = args.interior == "lattice" ? InteriorMode::Lattice
+                     : args.interior == "cvt"   ? InteriorMode::Cvt
+                                                : InteriorMode::Random;
   report.options = options;
-  if (options.stop_after == Stage::Cells) options.stop_after = Stage::Surface;
   const std::filesystem::path report_path = std::filesystem::path(args.output_dir) / "report.json";
   // report.json is written whatever the outcome, so a failed run still says why.
   const auto finish = [&](const std::string& status, const std::string& message, int code) {
@@ -87,6 +88,17 @@ int run_mesh(const MeshArgs& args) {
     write_or_remove(surface, "seeds.csv", [&](const auto& path) { write_seeds_csv(result->seeds, path); });
     write_or_remove(surface, "surface.obj", [&](const auto& path) { write_mesh(result->surface, path); });
     write_or_remove(surface, "surface.ply", [&](const auto& path) { write_mesh(result->surface, path); });
+    const bool cells = options.stop_after >= Stage::Cells;
+    const auto wants = [&](const char* format) {
+      return cells && std::find(args.formats.begin(), args.formats.end(), format) != args.formats.end();
+    };
+    write_or_remove(wants("vtu"), "mesh.vtu", [&](const auto& path) { write_vtu(result->cells, path); });
+    if (wants("openfoam")) {
+      write_openfoam_case(result->cells, out / "case");
+    } else {
+      std::error_code ignored;
+      std::filesystem::remove_all(out / "case", ignored);
+    }
     write_or_remove(surface, "quality.svg", [&](const auto& path) {
       write_histogram_svg(path, "surface quality: " + (out / "surface.ply").string(),
                           {surface_quality_panel(*result->surface_quality)});
@@ -98,7 +110,9 @@ int run_mesh(const MeshArgs& args) {
                    r.balls[0] + r.balls[1] + r.balls[2], r.balls[0], r.balls[1], r.balls[2], args.output_dir.c_str());
       if (surface) {
         std::fprintf(stderr, "vorocrust: %zu surface seeds, a surface of %zu triangles after %zu rounds of sliver "
-                     "elimination\n", result->seeds.size(), result->surface.num_faces(),
+                     "elimination\n", static_cast<std::size_t>(std::count_if(result->seeds.begin(), result->seeds.end(),
+                                                  [](const Seed& s) { return s.kind == SeedKind::Surface; })),
+                     result->surface.num_faces(),
                      result->slivers.rounds());
         const SurfaceQuality& q = *result->surface_quality;
         std::fprintf(stderr, "vorocrust: smallest angle %.1f deg, %.2f %% of angles below 30 deg, Q min %.3f, "
@@ -107,10 +121,20 @@ int run_mesh(const MeshArgs& args) {
                      q.topology_matches ? "as the input's" : "DIFFERS from the input's");
       }
     }
-    if (args.stop_after.empty()) {
-      throw Error(Error::Kind::NotImplemented,
-                  "not yet: interior seeds and Voronoi cells (paper 2.5) are not implemented in this version; the "
-                  "surface is in " + (out / "surface.obj").string() + " (--stop-after surface asks for no more)");
+    if (cells && !args.quiet) {
+      const InteriorStats& i = result->interior;
+      std::size_t interior_faces = 0;
+      double volume = 0;
+      for (const VoronoiFace& f : result->cells.faces) interior_faces += f.neighbour != kNoCell;
+      for (const VoronoiCell& c : result->cells.cells) volume += c.volume;
+      std::fprintf(stderr, "vorocrust: %zu interior and %zu outside seeds (%s); %zu cells, %zu faces (%zu between "
+                   "cells), volume %.10g\n", i.interior_seeds, i.outside_seeds, args.interior.c_str(),
+                   result->cells.cells.size(), result->cells.faces.size(), interior_faces, volume);
+      if (wants("vtu")) std::fprintf(stderr, "vorocrust: wrote %s (open it in ParaView)\n", (out / "mesh.vtu").c_str());
+      if (wants("openfoam")) {
+        std::fprintf(stderr, "vorocrust: wrote %s/ (check it with: checkMesh -case %s)\n", (out / "case").c_str(),
+                     (out / "case").c_str());
+      }
     }
     return finish("ok", "", kOk);
   } catch (const Error& e) {

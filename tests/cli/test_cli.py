@@ -137,29 +137,42 @@ class Usage(unittest.TestCase):
 
 
 class Mesh(unittest.TestCase):
-    def test_makes_the_surface_then_says_not_yet_and_writes_report(self):
+    def test_makes_the_whole_mesh_and_writes_report(self):
         with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "run")
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--seed", "7", "--threads", "1")
-            self.assertEqual(r.returncode, 6, r.stderr)
-            self.assertIn("not yet", r.stderr)
-            self.assertIn("--stop-after surface", r.stderr)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("mesh.vtu (open it in ParaView)", r.stderr)
+            self.assertIn("checkMesh -case " + os.path.join(out, "case"), r.stderr)
             # Not a terminal: plain progress lines, no carriage returns.
             self.assertIn("vorocrust: reading ...", r.stderr)
             self.assertNotIn("\r", r.stderr)
             with open(os.path.join(out, "report.json")) as f:
                 report = json.load(f)
-            self.assertEqual(report["status"], "not yet implemented")
+            self.assertEqual(report["status"], "ok")
             self.assertEqual(report["options"]["seed"], 7)
             self.assertEqual(report["options"]["threads"], 1)
             self.assertEqual(report["input"]["faces"], 446)
             self.assertEqual([t["phase"] for t in report["timings"]][:2], ["reading", "validating"])
             self.assertEqual(sorted(os.listdir(out)),
-                             ["balls.csv", "balls.vtk", "quality.svg", "report.json", "seeds.csv", "surface.obj",
-                              "surface.ply"])
+                             ["balls.csv", "balls.vtk", "case", "mesh.vtu", "quality.svg", "report.json", "seeds.csv",
+                              "surface.obj", "surface.ply"])
             self.assertEqual(report["features"]["corners"], 12)
             self.assertEqual(report["refinement"]["balls"]["corner"], 12)
             self.assertEqual(report["slivers"]["half_covered_left"], 0)
+            # Every material seed has a cell; the cells' boundary is the output surface.
+            with open(os.path.join(out, "seeds.csv")) as f:
+                rows = list(csv.DictReader(f))
+            kinds = [row["kind"] for row in rows]
+            self.assertEqual(kinds.count("interior"), report["interior"]["interior_seeds"])
+            self.assertEqual(kinds.count("outside"), report["interior"]["outside_seeds"])
+            self.assertEqual(sum(1 for row in rows if row["label"] != "0"), report["cells"]["cells"])
+            self.assertEqual(report["cells"]["boundary_faces"], report["surface"]["triangles"])
+            # A run that stops at the surface leaves no volume mesh of the run before.
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--stop-after", "surface", "-q")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertNotIn("mesh.vtu", os.listdir(out))
+            self.assertNotIn("case", os.listdir(out))
 
     def test_surface_files_agree_with_the_report_and_stale_ones_go(self):
         with tempfile.TemporaryDirectory() as tmp:
@@ -200,8 +213,8 @@ class Mesh(unittest.TestCase):
 
     def test_quiet_prints_only_the_error(self):
         with tempfile.TemporaryDirectory() as out:
-            r = run("mesh", model("sandia_OneBox.obj"), "-o", out, "--quiet")
-            self.assertEqual(r.returncode, 6)
+            r = run("mesh", os.path.join(DATA, "invalid", "cube_pierced.off"), "-o", out, "--quiet")
+            self.assertEqual(r.returncode, 4)
             self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
 
     def test_invalid_input_stops_before_meshing_and_says_why(self):

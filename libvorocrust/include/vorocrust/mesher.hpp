@@ -100,6 +100,20 @@ struct SliverStats {
   std::size_t rounds() const { return iterations.empty() ? 0 : iterations.size() - 1; }
 };
 
+// How the interior was seeded (paper A.5).
+struct InteriorStats {
+  std::size_t interior_seeds = 0;  // seeds inside a material, away from the surface
+  std::size_t outside_seeds = 0;   // seeds outside every material, bounding the boundary cells
+  std::size_t darts = 0;           // seeds from dart throwing
+  std::size_t spokes = 0;          // spokes shot
+  std::size_t spoke_seeds = 0;     // seeds placed on spokes
+  std::size_t lattice_seeds = 0;   // seeds on the lattice (InteriorMode::Lattice)
+  std::size_t lipschitz_shrinks = 0;
+  std::size_t rounds = 0;          // spoke passes: one, and one more after each pass that shrank a ball
+  int cvt_iterations = 0;
+  double cvt_last_move = 0;        // the largest move of the last Lloyd iteration over the seed's radius
+};
+
 struct FeatureCounts {
   std::size_t sharp_edges = 0, corners = 0, creases = 0, patches = 0;
   std::size_t faces_after_smoothing = 0;
@@ -125,6 +139,7 @@ struct MeshResult {
   std::optional<SurfaceQuality> surface_quality;
   // From Stage::Cells on: seeds holds the interior and outside seeds after the surface seeds,
   // and cells the conforming Voronoi mesh of the material seeds.
+  InteriorStats interior;
   VoronoiMesh cells;
 };
 

@@ -4,6 +4,8 @@
 
 #include "features/smooth_patches.hpp"
 #include "features/strata.hpp"
+#include "interior/lloyd_relaxation.hpp"
+#include "interior/sample_interior.hpp"
 #include "refinement/refine_balls.hpp"
 #include "seeds/eliminate_slivers.hpp"
 #include "seeds/surface_seeds.hpp"
@@ -129,9 +131,33 @@ MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, c
   if (progress && !progress({"surface quality", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
   result.surface_quality = clock("surface quality", [&] { return measure_surface_quality(input, result.surface); });
   if (options.stop_after == Stage::Surface) return result;
-  throw Error(Error::Kind::NotImplemented,
-              "not yet: interior seeds and Voronoi cells (paper 2.5) are not implemented in this version; "
-              "run with --stop-after surface for the surface seeds and the surface mesh");
+
+  // Interior seeds (paper 2.5, A.5).
+  InteriorOptions interior_options;
+  interior_options.mode = options.interior;
+  interior_options.lipschitz = options.lipschitz;
+  interior_options.seed = options.seed;
+  geometry::Box domain;
+  for (const Point& p : input.vertices) domain.include(p);
+  std::vector<Seed> interior = clock("interior seeds", [&] {
+    return sample_interior(result.seeds, refinement.index(), sizing, domain, interior_options, progress,
+                           result.interior);
+  });
+  for (const Seed& s : interior) (s.kind == SeedKind::Outside ? result.interior.outside_seeds : result.interior.interior_seeds)++;
+  result.seeds.insert(result.seeds.end(), interior.begin(), interior.end());
+  if (options.interior == InteriorMode::Cvt && options.cvt_iterations > 0) {
+    result.interior.cvt_iterations = options.cvt_iterations;
+    result.interior.cvt_last_move = clock("cvt", [&] {
+      return lloyd_relaxation(result.seeds, refinement.index(), options.cvt_iterations, options.threads, progress);
+    });
+  }
+
+  // Cells.
+  if (progress && !progress({"cells", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
+  CellsOptions cells_options;
+  cells_options.threads = options.threads;
+  result.cells = clock("cells", [&] { return compute_cells(result.seeds, cells_options); });
+  return result;
 }
 
 }  // namespace vorocrust

@@ -127,6 +127,8 @@ std::string run_report_json(const RunReport& report, int indent) {
                 {"stop_after", o.stop_after == Stage::Balls     ? "balls"
                                : o.stop_after == Stage::Surface ? "surface"
                                                                 : "cells"},
+                {"interior", to_string(o.interior)},
+                {"cvt_iterations", o.cvt_iterations},
                 {"seed", o.seed},
                 {"threads", o.threads}}},
               {"status", report.status},
@@ -186,6 +188,25 @@ std::string run_report_json(const RunReport& report, int indent) {
                       {"triangles", m.surface.num_faces()},
                       {"regions", m.surface.region_names}};
     if (m.surface_quality) doc["surface"]["quality"] = quality_object(*m.surface_quality);
+  }
+  if (report.result && !report.result->cells.cells.empty()) {
+    const MeshResult& m = *report.result;
+    const InteriorStats& i = m.interior;
+    doc["interior"] = {{"interior_seeds", i.interior_seeds}, {"outside_seeds", i.outside_seeds},
+                       {"darts", i.darts},                   {"spokes", i.spokes},
+                       {"spoke_seeds", i.spoke_seeds},       {"lattice_seeds", i.lattice_seeds},
+                       {"lipschitz_shrinks", i.lipschitz_shrinks}, {"rounds", i.rounds},
+                       {"cvt_iterations", i.cvt_iterations}, {"cvt_last_move", i.cvt_last_move}};
+    std::size_t interior_faces = 0;
+    double volume = 0;
+    for (const VoronoiFace& f : m.cells.faces) interior_faces += f.neighbour != kNoCell;
+    for (const VoronoiCell& c : m.cells.cells) volume += c.volume;
+    doc["cells"] = {{"cells", m.cells.cells.size()},
+                    {"faces", m.cells.faces.size()},
+                    {"interior_faces", interior_faces},
+                    {"boundary_faces", m.cells.faces.size() - interior_faces},
+                    {"points", m.cells.points.size()},
+                    {"volume", volume}};
   }
   if (report.mesh && report.input && report.validation) {
     doc["input"] = info_object(report.inputs, *report.mesh, *report.input, *report.validation);

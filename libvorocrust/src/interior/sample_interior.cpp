@@ -1,0 +1,320 @@
+// Interior seeds (paper 2.5, appendix A.5).
+#include "interior/sample_interior.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <numbers>
+#include <optional>
+#include <random>
+
+#include "geometry/ball_tree.hpp"
+#include "refinement/ball_index.hpp"
+#include "refinement/sizing_field.hpp"
+#include "vorocrust/error.hpp"
+
+namespace vorocrust {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The parameter interval (t0, t1) in which p + t d (|d| = 1) lies strictly inside a sphere; empty
+// (t0 >= t1) when the line misses it.
+std::pair<double, double> chord(const Point& p, const Point& d, const Point& centre, double radius) {
+  const Point to_centre = centre - p;
+  const double b = d.dot(to_centre);
+  const double discriminant = b * b - (to_centre.squaredNorm() - radius * radius);
+  if (!(discriminant > 0)) return {0, 0};
+  const double h = std::sqrt(discriminant);
+  return {b - h, b + h};
+}
+
+class InteriorSampler {
+ public:
+  InteriorSampler(const std::vector<Seed>& surface_seeds, const BallIndex& protecting_balls, const SizingField& sizing,
+                  const geometry::Box& domain, const InteriorOptions& options, const ProgressCallback& progress,
+                  InteriorStats& stats)
+      : surface_(surface_seeds),
+        protecting_(protecting_balls),
+        sizing_(sizing),
+        options_(options),
+        progress_(progress),
+        stats_(stats),
+        rng_(options.seed ^ 0x1e7e510f5eedull) {
+    if (surface_seeds.empty()) throw Error(Error::Kind::InvalidGeometry, "no surface seeds to grow interior seeds from");
+    for (std::uint32_t i = 0; i < surface_seeds.size(); ++i) {
+      surface_tree_.insert(surface_seeds[i].position, surface_seeds[i].radius, i);
+    }
+    const Point centre = 0.5 * (domain.lo + domain.hi);
+    const Point half = 0.5 * (domain.hi - domain.lo);
+    box_.lo = centre - 3 * half;
+    box_.hi = centre + 3 * half;
+    domain_ = domain;
+  }
+
+  // A cubic lattice over the regions deep enough for its cells; the rest is left to random seeds.
+  void place_lattice() {
+    std::vector<double> radii;
+    for (const Seed& s : surface_) radii.push_back(s.radius);
+    std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+    const Point centre = 0.5 * (domain_.lo + domain_.hi);
+    const double spacing = std::min(radii[radii.size() / 2], sizing_(centre));
+    // A ball of this radius about each lattice point covers its lattice cube, so no random seed
+    // lands between lattice points.
+    const double radius = 0.87 * spacing;
+    Eigen::Vector3i lo, hi;
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = static_cast<int>(std::floor((domain_.lo[k] - centre[k]) / spacing));
+      hi[k] = static_cast<int>(std::ceil((domain_.hi[k] - centre[k]) / spacing));
+    }
+    for (int i = lo[0]; i <= hi[0]; ++i) {
+      for (int j = lo[1]; j <= hi[1]; ++j) {
+        for (int k = lo[2]; k <= hi[2]; ++k) {
+          const Point z = centre + spacing * Point(i, j, k);
+          const std::optional<Seed> seed = admit(z);
+          if (seed && seed->region != kOutsideRegion && seed->radius >= radius) {
+            add({z, seed->region, radius, SeedKind::Interior});
+            ++stats_.lattice_seeds;
+          }
+        }
+      }
+      check_cancel();
+    }
+  }
+
+  // Uniform darts over the grown box until `misses` darts in a row land in a ball.
+  void throw_darts() {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int misses = 0; misses < options_.misses;) {
+      const Point z = box_.lo + (box_.hi - box_.lo).cwiseProduct(Point(unit(rng_), unit(rng_), unit(rng_)));
+      if (const std::optional<Seed> seed = admit(z)) {
+        add(*seed);
+        ++stats_.darts;
+        misses = 0;
+      } else {
+        ++misses;
+      }
+    }
+  }
+
+  // Spoke darts from every seed, in order, each until `misses` spokes in a row find no room.
+  // The balls that can reach a seed's spokes are gathered once per seed; seeds its own spokes
+  // place join them.
+  void shoot_spokes() {
+    ++stats_.rounds;
+    std::deque<std::uint32_t> queue;
+    for (std::uint32_t i = 0; i < seeds_.size(); ++i) queue.push_back(i);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<BallTree::Sphere> near;
+    std::size_t popped = 0;
+    while (!queue.empty()) {
+      const std::uint32_t from = queue.front();
+      queue.pop_front();
+      if ((++popped & 1023) == 0) check_cancel();
+      const Point z = seeds_[from].position;
+      const double r = seeds_[from].radius;
+      gather_spheres(z, 2 * r, near);
+      for (int misses = 0; misses < options_.misses;) {
+        ++stats_.spokes;
+        Point direction(normal(rng_), normal(rng_), normal(rng_));
+        const double norm = direction.norm();
+        if (!(norm > 0)) continue;
+        direction /= norm;
+        const std::optional<double> t = uncovered_point(z, direction, r, 2 * r, unit(rng_), near);
+        std::optional<Seed> seed;
+        if (t) seed = admit(z + *t * direction);
+        if (!seed) {
+          ++misses;
+          continue;
+        }
+        misses = 0;
+        add(*seed);
+        near.push_back({seed->position, seed->radius, 0});
+        ++stats_.spoke_seeds;
+        queue.push_back(static_cast<std::uint32_t>(seeds_.size() - 1));
+      }
+    }
+  }
+
+  // Shrinks every seed's ball to min over the other seeds q of r_q + L |z - q|. One pass reaches
+  // the fixed point: the bound through a chain of seeds is never below the direct one, by the
+  // triangle inequality. Returns whether a ball shrank.
+  bool enforce_lipschitz() {
+    std::vector<double> radii(seeds_.size());
+    for (std::uint32_t i = 0; i < seeds_.size(); ++i) {
+      const Point& z = seeds_[i].position;
+      radii[i] = std::min({seeds_[i].radius, lipschitz_bound(surface_tree_, z), lipschitz_bound(interior_tree_, z)});
+    }
+    bool shrank = false;
+    for (std::uint32_t i = 0; i < seeds_.size(); ++i) {
+      if (radii[i] < seeds_[i].radius) {
+        seeds_[i].radius = radii[i];
+        interior_tree_.shrink(i, radii[i]);
+        ++stats_.lipschitz_shrinks;
+        shrank = true;
+      }
+    }
+    return shrank;
+  }
+
+  std::vector<Seed> take() { return std::move(seeds_); }
+
+ private:
+  // The seed a point z would be: the region of its nearest surface seed and the radius that
+  // keeps the balls L-Lipschitz; nothing when z lies outside the box or in a ball.
+  std::optional<Seed> admit(const Point& z) const {
+    if ((z.array() < box_.lo.array()).any() || (z.array() > box_.hi.array()).any()) return std::nullopt;
+    double radius = kInfinity;
+    if (inside_or_bound(interior_tree_, z, radius)) return std::nullopt;
+    // The surface seeds: containment, the Lipschitz bound and the nearest one, in one search.
+    const double L = options_.lipschitz;
+    bool inside = false;
+    double nearest = kInfinity;
+    std::uint32_t nearest_seed = 0;
+    surface_tree_.search(
+        z,
+        [&](double d2, double max_radius, std::uint32_t) {
+          return !inside && (d2 < nearest || d2 < max_radius * max_radius || L * L * d2 < radius * radius);
+        },
+        [&](const BallTree::Sphere& s) {
+          const double d2 = (s.centre - z).squaredNorm();
+          if (d2 < s.radius * s.radius) inside = true;
+          if (d2 < nearest) {
+            nearest = d2;
+            nearest_seed = s.ball;
+          }
+          radius = std::min(radius, s.radius + L * std::sqrt(d2));
+        });
+    if (inside) return std::nullopt;
+    if (protecting_.covers(z)) return std::nullopt;
+    radius = std::min(radius, sizing_(z));
+    const std::int32_t region = surface_[nearest_seed].region;
+    return Seed{z, region, radius, region == kOutsideRegion ? SeedKind::Outside : SeedKind::Interior};
+  }
+
+  // Whether z lies in a ball of `tree`; if not, `bound` falls to the tree's Lipschitz bound at z.
+  bool inside_or_bound(const BallTree& tree, const Point& z, double& bound) const {
+    const double L = options_.lipschitz;
+    bool inside = false;
+    tree.search(
+        z,
+        [&](double d2, double max_radius, std::uint32_t) {
+          return !inside && (d2 < max_radius * max_radius || L * L * d2 < bound * bound);
+        },
+        [&](const BallTree::Sphere& s) {
+          const double d2 = (s.centre - z).squaredNorm();
+          if (d2 < s.radius * s.radius) inside = true;
+          bound = std::min(bound, s.radius + L * std::sqrt(d2));
+        });
+    return inside;
+  }
+
+  double lipschitz_bound(const BallTree& tree, const Point& z) const {
+    double bound = kInfinity;
+    const double L = options_.lipschitz;
+    tree.search(
+        z, [&](double d2, double, std::uint32_t) { return L * L * d2 < bound * bound; },
+        [&](const BallTree::Sphere& s) { bound = std::min(bound, s.radius + L * (s.centre - z).norm()); });
+    return bound;
+  }
+
+  // Every ball that reaches within `reach` of z: seeds' balls and protecting balls.
+  void gather_spheres(const Point& z, double reach, std::vector<BallTree::Sphere>& out) const {
+    out.clear();
+    for (const BallTree* tree : {&interior_tree_, &surface_tree_}) {
+      tree->search(
+          z,
+          [&](double d2, double max_radius, std::uint32_t) { return d2 < (reach + max_radius) * (reach + max_radius); },
+          [&](const BallTree::Sphere& s) {
+            if ((s.centre - z).squaredNorm() < (reach + s.radius) * (reach + s.radius)) out.push_back(s);
+          });
+    }
+    for (StratumType type : {StratumType::Corner, StratumType::Crease, StratumType::Patch}) {
+      balls_.clear();
+      protecting_.reaching(type, z, reach, balls_);
+      for (std::uint32_t b : balls_) out.push_back({protecting_[b].site.position, protecting_[b].radius, b});
+    }
+  }
+
+  // A point of the spoke z + t d, t in [t_lo, t_hi], that none of the spheres covers and the box
+  // holds, chosen uniformly (u in [0, 1)) over that part's length; nothing when no part is left.
+  std::optional<double> uncovered_point(const Point& z, const Point& d, double t_lo, double t_hi, double u,
+                                        const std::vector<BallTree::Sphere>& spheres) const {
+    for (int k = 0; k < 3; ++k) {  // the box as a slab per axis
+      if (d[k] == 0) continue;
+      const double a = (box_.lo[k] - z[k]) / d[k], b = (box_.hi[k] - z[k]) / d[k];
+      t_lo = std::max(t_lo, std::min(a, b));
+      t_hi = std::min(t_hi, std::max(a, b));
+    }
+    if (!(t_lo < t_hi)) return std::nullopt;
+    std::vector<std::pair<double, double>>& covered = covered_;
+    covered.clear();
+    for (const BallTree::Sphere& s : spheres) {
+      const auto [a, b] = chord(z, d, s.centre, s.radius);
+      if (a < b && b > t_lo && a < t_hi) covered.emplace_back(std::max(a, t_lo), std::min(b, t_hi));
+    }
+    std::sort(covered.begin(), covered.end());
+    // The free intervals between the merged covered ones, then the point at fraction u of their length.
+    std::vector<std::pair<double, double>>& gaps = gaps_;
+    gaps.clear();
+    double reached = t_lo;
+    for (const auto& [a, b] : covered) {
+      if (a > reached) gaps.emplace_back(reached, a);
+      reached = std::max(reached, b);
+    }
+    if (reached < t_hi) gaps.emplace_back(reached, t_hi);
+    double length = 0;
+    for (const auto& [a, b] : gaps) length += b - a;
+    if (!(length > 1e-12 * t_hi)) return std::nullopt;
+    double target = u * length;
+    for (const auto& [a, b] : gaps) {
+      if (target < b - a) return a + target;
+      target -= b - a;
+    }
+    return gaps.back().second;
+  }
+
+  void add(const Seed& seed) {
+    interior_tree_.insert(seed.position, seed.radius, static_cast<std::uint32_t>(seeds_.size()));
+    seeds_.push_back(seed);
+  }
+
+  void check_cancel() const {
+    if (progress_ && !progress_({"interior seeds", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
+  }
+
+  const std::vector<Seed>& surface_;
+  const BallIndex& protecting_;
+  const SizingField& sizing_;
+  InteriorOptions options_;
+  const ProgressCallback& progress_;
+  InteriorStats& stats_;
+  std::mt19937_64 rng_;
+  geometry::Box box_, domain_;
+  BallTree surface_tree_, interior_tree_;
+  std::vector<Seed> seeds_;
+  mutable std::vector<std::pair<double, double>> covered_, gaps_;
+  mutable std::vector<std::uint32_t> balls_;
+};
+
+}  // namespace
+
+std::vector<Seed> sample_interior(const std::vector<Seed>& surface_seeds, const BallIndex& protecting_balls,
+                                  const SizingField& sizing, const geometry::Box& domain,
+                                  const InteriorOptions& options, const ProgressCallback& progress,
+                                  InteriorStats& stats) {
+  InteriorSampler sampler(surface_seeds, protecting_balls, sizing, domain, options, progress, stats);
+  if (options.mode == InteriorMode::Lattice) sampler.place_lattice();
+  sampler.throw_darts();
+  constexpr int kMaxRounds = 20;
+  for (int round = 0; round < kMaxRounds; ++round) {
+    sampler.shoot_spokes();
+    if (!sampler.enforce_lipschitz()) break;
+  }
+  return sampler.take();
+}
+
+}  // namespace vorocrust

@@ -1,0 +1,51 @@
+// Internal: seeds away from the surface (paper 2.5, appendix A.5).
+//
+// The surface seeds carry radii (the mean of their three balls); an interior seed z takes the
+// region of its nearest surface seed and a radius that extends the surface sizing inward,
+// r_z = min(sz(z), min over seeds q of r_q + L |z - q|), so cells grow away from the surface at
+// the rate L allows. A candidate is refused when it lies inside a protecting ball (the surface
+// facets are Voronoi facets only while no seed enters the union of balls), inside a surface
+// seed's ball or inside an interior seed's ball.
+//
+// Random: dart throwing over the input's bounding box grown 3x about its centre until 100
+// consecutive misses, then spoke darts from every seed until each has missed 100 times in a row:
+// a spoke from z spans [r_z, 2 r_z] in a random direction, and a new seed lands uniformly on the
+// part of it no ball covers. Then the radii are made L-Lipschitz over all seeds; when that shrank
+// a ball the spokes run again from every seed, until no ball shrinks.
+// Lattice: first the points of a cubic lattice over the material regions (spacing: the median
+// surface-seed radius, at most --max-size), each with a ball that covers its lattice
+// cube, then the random sampling fills what they leave: the layer near the surface and the
+// outside.
+//
+// Seeds whose region is 0 are kept as outside seeds: they bound the boundary cells.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/box_tree.hpp"
+#include "vorocrust/mesher.hpp"
+#include "vorocrust/progress.hpp"
+#include "vorocrust/seeds.hpp"
+
+namespace vorocrust {
+
+class BallIndex;
+class SizingField;
+
+struct InteriorOptions {
+  InteriorMode mode = InteriorMode::Random;
+  double lipschitz = 0.25;
+  std::uint64_t seed = 0;
+  int misses = 100;  // consecutive misses that end dart throwing, and a spoke seed
+};
+
+
+// Interior and outside seeds for the given surface seeds (surface seeds are not repeated).
+// `domain` is the input's bounding box. Fills the sampling counts of `stats`.
+std::vector<Seed> sample_interior(const std::vector<Seed>& surface_seeds, const BallIndex& protecting_balls,
+                                  const SizingField& sizing, const geometry::Box& domain,
+                                  const InteriorOptions& options, const ProgressCallback& progress,
+                                  InteriorStats& stats);
+
+}  // namespace vorocrust

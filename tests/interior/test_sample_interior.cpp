@@ -1,0 +1,167 @@
+// Interior seeds (paper 2.5, A.5) through the whole pipeline on cgal_joint.off: no seed enters a
+// protecting ball or a surface seed's ball, so the surface survives in the cells; radii stay
+// L-Lipschitz; every mode gives cells bounded by exactly the output surface.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+
+#include "cells/mesh_checks.hpp"
+#include "core/surface_measures.hpp"
+#include "test_support.hpp"
+#include "vorocrust/mesher.hpp"
+#include "vorocrust/read_mesh.hpp"
+
+namespace vorocrust {
+namespace {
+
+const SurfaceMesh& joint() {
+  static const SurfaceMesh mesh = read_mesh(test::model("cgal_joint.off"));
+  return mesh;
+}
+
+// One run per mode, shared by the tests.
+const MeshResult& run(InteriorMode mode) {
+  static std::map<InteriorMode, MeshResult> runs;
+  auto it = runs.find(mode);
+  if (it == runs.end()) {
+    MeshOptions options;
+    options.interior = mode;
+    options.cvt_iterations = 5;
+    options.seed = 3;
+    it = runs.emplace(mode, generate_mesh(joint(), options)).first;
+  }
+  return it->second;
+}
+
+std::size_t first_interior(const MeshResult& r) {
+  const auto it = std::find_if(r.seeds.begin(), r.seeds.end(), [](const Seed& s) { return s.kind != SeedKind::Surface; });
+  return static_cast<std::size_t>(it - r.seeds.begin());
+}
+
+void expect_surface_untouched(const MeshResult& r) {
+  const std::size_t first = first_interior(r);
+  ASSERT_LT(first, r.seeds.size());
+  for (std::size_t i = first; i < r.seeds.size(); ++i) {
+    const Point& z = r.seeds[i].position;
+    ASSERT_NE(r.seeds[i].kind, SeedKind::Surface) << i;
+    EXPECT_EQ(r.seeds[i].kind == SeedKind::Outside, r.seeds[i].region == kOutsideRegion) << i;
+    for (const Ball& b : r.balls) {
+      ASSERT_GE((z - b.center).norm(), b.radius) << "seed " << i << " inside a protecting ball";
+    }
+    for (std::size_t s = 0; s < first; ++s) {
+      ASSERT_GE((z - r.seeds[s].position).norm(), r.seeds[s].radius) << "seed " << i << " inside surface seed " << s;
+    }
+  }
+}
+
+// The material cells' boundary is the output surface: one face per triangle, the same enclosed
+// volume, every face between the inside and the outside.
+void expect_bounded_by_the_surface(const MeshResult& r) {
+  test::expect_closed_and_convex(r.cells, 1e-9);
+  std::size_t boundary = 0;
+  for (const VoronoiFace& f : r.cells.faces) {
+    if (f.neighbour != kNoCell) continue;
+    ++boundary;
+    EXPECT_EQ(f.regions, (RegionPair{kInsideRegion, kOutsideRegion}));
+  }
+  EXPECT_EQ(boundary, r.surface.num_faces());
+  std::vector<Index> all(r.surface.num_faces());
+  std::iota(all.begin(), all.end(), Index{0});
+  const double enclosed = enclosed_volume(r.surface, all);
+  EXPECT_NEAR(test::total_volume(r.cells), enclosed, 1e-9 * enclosed);
+  std::size_t material = 0;
+  for (const Seed& s : r.seeds) material += s.region != kOutsideRegion;
+  EXPECT_EQ(r.cells.cells.size(), material);
+}
+
+TEST(SampleInterior, RandomSeedsStayOutOfEveryBallAndKeepTheSurface) {
+  const MeshResult& r = run(InteriorMode::Random);
+  EXPECT_GT(r.interior.interior_seeds, 100u);
+  EXPECT_GT(r.interior.outside_seeds, 100u);
+  EXPECT_EQ(r.interior.interior_seeds + r.interior.outside_seeds, r.seeds.size() - first_interior(r));
+  expect_surface_untouched(r);
+  expect_bounded_by_the_surface(r);
+}
+
+TEST(SampleInterior, RadiiAreLipschitzAndSeedsOutsideEachOthersBalls) {
+  const MeshResult& r = run(InteriorMode::Random);
+  const double L = MeshOptions{}.lipschitz;
+  for (std::size_t i = first_interior(r); i < r.seeds.size(); ++i) {
+    for (std::size_t j = 0; j < r.seeds.size(); ++j) {
+      if (i == j) continue;
+      const double d = (r.seeds[i].position - r.seeds[j].position).norm();
+      ASSERT_LE(r.seeds[i].radius, r.seeds[j].radius + L * d + 1e-12) << i << " " << j;
+      if (j < i && r.seeds[j].kind != SeedKind::Surface) {
+        // The later seed was placed outside the earlier one's ball (as it was then: radii only shrink).
+        ASSERT_GE(d, r.seeds[j].radius) << i << " " << j;
+      }
+    }
+  }
+}
+
+TEST(SampleInterior, SameSeedSameSeeds) {
+  MeshOptions options;
+  options.seed = 3;
+  options.threads = 1;
+  const MeshResult again = generate_mesh(joint(), options);
+  const MeshResult& r = run(InteriorMode::Random);
+  ASSERT_EQ(again.seeds.size(), r.seeds.size());
+  for (std::size_t i = 0; i < r.seeds.size(); ++i) {
+    ASSERT_EQ(again.seeds[i].position, r.seeds[i].position) << i;
+    ASSERT_EQ(again.seeds[i].radius, r.seeds[i].radius) << i;
+  }
+  EXPECT_EQ(again.cells.points.size(), r.cells.points.size());
+}
+
+TEST(SampleInterior, LatticeGivesCubesInTheDeepInterior) {
+  const MeshResult& r = run(InteriorMode::Lattice);
+  EXPECT_GT(r.interior.lattice_seeds, 20u);
+  expect_surface_untouched(r);
+  expect_bounded_by_the_surface(r);
+  // A lattice seed whose six lattice neighbours are seeds too, and no seed of the random layer
+  // near the surface close enough to cut a corner, has a cube for its cell. The joint is thin:
+  // about one lattice seed in nine is that deep.
+  std::size_t cubes = 0;
+  for (const VoronoiCell& c : r.cells.cells) {
+    if (c.faces.size() != 6) continue;
+    double lo = 1e300, hi = 0;
+    for (Index f : c.faces) {
+      const double a = test::area_vector(r.cells, r.cells.faces[f].points).norm();
+      lo = std::min(lo, a);
+      hi = std::max(hi, a);
+    }
+    cubes += hi < lo * (1 + 1e-6);
+  }
+  EXPECT_GT(cubes, r.interior.lattice_seeds / 12);
+}
+
+TEST(SampleInterior, CvtMovesInteriorSeedsTowardTheirCentroidsAndKeepsTheSurface) {
+  const MeshResult& random = run(InteriorMode::Random);
+  const MeshResult& cvt = run(InteriorMode::Cvt);
+  expect_surface_untouched(cvt);
+  expect_bounded_by_the_surface(cvt);
+  ASSERT_EQ(cvt.seeds.size(), random.seeds.size());
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < cvt.seeds.size(); ++i) {
+    if (random.seeds[i].kind == SeedKind::Interior) {
+      moved += cvt.seeds[i].position != random.seeds[i].position;
+    } else {
+      ASSERT_EQ(cvt.seeds[i].position, random.seeds[i].position) << "seed " << i << " is no interior seed";
+    }
+  }
+  EXPECT_GT(moved, random.interior.interior_seeds / 2);
+  // The CVT energy's proxy: interior seeds' distance from their cells' centroids.
+  const auto off_centre = [](const MeshResult& r) {
+    double sum = 0;
+    for (const VoronoiCell& c : r.cells.cells) {
+      if (r.seeds[c.seed].kind == SeedKind::Interior) sum += (r.seeds[c.seed].position - c.centroid).norm();
+    }
+    return sum;
+  };
+  EXPECT_LT(off_centre(cvt), 0.75 * off_centre(random));
+}
+
+}  // namespace
+}  // namespace vorocrust
