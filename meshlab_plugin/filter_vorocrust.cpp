@@ -3,6 +3,8 @@
 #include <QDir>
 #include <QFileInfo>
 
+#include <array>
+#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <new>
@@ -25,6 +27,7 @@ const char* const kSharpAngle = "sharpAngle";
 const char* const kMaxSize = "maxSize";
 const char* const kSeed = "seed";
 const char* const kInterior = "interior";
+const char* const kCvtIterations = "cvtIterations";
 const char* const kOutputFolder = "outputFolder";
 const char* const kWriteVtu = "writeVtu";
 const char* const kWriteOpenFoam = "writeOpenFoam";
@@ -32,10 +35,16 @@ const char* const kWriteSeeds = "writeSeeds";
 const char* const kWriteSurface = "writeSurface";
 const char* const kAllVisibleLayers = "allVisibleLayers";
 
-// How the interior of the volume is seeded (paper 2.5). The library does not take it yet: it
-// is read, checked and logged, and goes into MeshOptions when the interior stage lands.
-enum class InteriorMode { Random, Lattice, Cvt };
-const QStringList kInteriorModes{"random", "lattice", "cvt"};
+// How the interior of the volume is seeded (paper 2.5): the enum's entries, in
+// vorocrust::InteriorMode's order.
+const std::array kInteriorModes{vorocrust::InteriorMode::Random, vorocrust::InteriorMode::Lattice,
+                                vorocrust::InteriorMode::Cvt};
+
+QStringList interior_mode_names() {
+  QStringList names;
+  for (vorocrust::InteriorMode mode : kInteriorModes) names << vorocrust::to_string(mode);
+  return names;
+}
 
 // The files the Voronoi Mesh filter writes into its output folder.
 struct OutputRequest {
@@ -44,11 +53,13 @@ struct OutputRequest {
   bool openfoam = true;  // case/: an OpenFOAM case
   bool seeds = true;     // seeds.csv: the seeds, from which the whole mesh can be rebuilt
   bool surface = true;   // surface.obj and surface.ply: the conforming surface
+
+  bool volume() const { return vtu || openfoam; }
+  bool any() const { return volume() || seeds || surface; }
 };
 
 struct VoronoiRequest {
   vorocrust::MeshOptions options;
-  InteriorMode interior = InteriorMode::Random;
   OutputRequest output;
   bool all_visible_layers = false;
 };
@@ -86,23 +97,57 @@ vorocrust::MeshOptions mesh_options(const RichParameterList& parameters, vorocru
   return options;
 }
 
+// The run asks the library for the cells only when a volume file is wanted: the surface and the
+// seeds (layers, seeds.csv, surface.*) are all there from Stage::Surface on.
 VoronoiRequest voronoi_request(const RichParameterList& parameters) {
   VoronoiRequest request;
-  request.options = mesh_options(parameters, vorocrust::Stage::Cells);
-  const int interior = parameters.getEnum(kInterior);
-  if (interior < 0 || interior >= kInteriorModes.size()) {
-    throw Error(Error::Kind::Usage, "unknown interior mode " + std::to_string(interior));
-  }
-  request.interior = static_cast<InteriorMode>(interior);
-  const QString folder = parameters.getString(kOutputFolder).trimmed();
-  if (folder.isEmpty()) throw Error(Error::Kind::Usage, "no output folder given");
-  request.output.folder = folder.toStdString();
   request.output.vtu = parameters.getBool(kWriteVtu);
   request.output.openfoam = parameters.getBool(kWriteOpenFoam);
   request.output.seeds = parameters.getBool(kWriteSeeds);
   request.output.surface = parameters.getBool(kWriteSurface);
+  request.options =
+      mesh_options(parameters, request.output.volume() ? vorocrust::Stage::Cells : vorocrust::Stage::Surface);
+  const int interior = parameters.getEnum(kInterior);
+  if (interior < 0 || interior >= int(kInteriorModes.size())) {
+    throw Error(Error::Kind::Usage, "unknown interior mode " + std::to_string(interior));
+  }
+  request.options.interior = kInteriorModes[interior];
+  request.options.cvt_iterations = parameters.getInt(kCvtIterations);
+  request.options.check();
+  const QString folder = parameters.getString(kOutputFolder).trimmed();
+  if (request.output.any() && folder.isEmpty()) throw Error(Error::Kind::Usage, "no output folder given");
+  request.output.folder = folder.toStdString();
   request.all_visible_layers = parameters.getBool(kAllVisibleLayers);
   return request;
+}
+
+// Makes the output folder before the run, so that a folder that cannot be made stops the filter
+// before the meshing rather than after it.
+void make_output_folder(const OutputRequest& output) {
+  if (!output.any()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(output.folder, ec);
+  if (ec || !std::filesystem::is_directory(output.folder)) {
+    throw Error(Error::Kind::Output, "cannot make the output folder: " + (ec ? ec.message() : "not a folder"),
+                {.file = output.folder.string()});
+  }
+}
+
+// Writes the files asked for, each atomically, and returns their names. Files of earlier runs
+// that were not asked for this time are left as they are.
+QStringList write_outputs(const vorocrust::MeshResult& result, const OutputRequest& output) {
+  QStringList written;
+  const auto write = [&](bool wanted, const char* name, const auto& writer) {
+    if (!wanted) return;
+    writer(output.folder / name);
+    written << name;
+  };
+  write(output.vtu, "mesh.vtu", [&](const auto& path) { vorocrust::write_vtu(result.cells, path); });
+  write(output.openfoam, "case", [&](const auto& path) { vorocrust::write_openfoam_case(result.cells, path); });
+  write(output.seeds, "seeds.csv", [&](const auto& path) { vorocrust::write_seeds_csv(result.seeds, path); });
+  write(output.surface, "surface.obj", [&](const auto& path) { vorocrust::write_mesh(result.surface, path); });
+  write(output.surface, "surface.ply", [&](const auto& path) { vorocrust::write_mesh(result.surface, path); });
+  return written;
 }
 
 // The default output folder: "NAME_vorocrust" beside the layer's file, or in the home folder.
@@ -129,6 +174,21 @@ void check_input(vorocrust::SurfaceMesh& surface, Logger&& log) {
   if (!errors.empty()) {
     throw Error(Error::Kind::InvalidGeometry, "the input surface cannot be meshed:" + errors);
   }
+}
+
+std::string describe_surface(const vorocrust::MeshResult& result) {
+  std::string text = std::to_string(result.seeds.size()) + " seeds; a surface of " +
+                     std::to_string(result.surface.num_faces()) + " triangles";
+  if (const auto& q = result.surface_quality) {
+    char figures[200];
+    std::snprintf(figures, sizeof figures,
+                  ", smallest angle %.1f deg, Q min %.3f mean %.3f, Hausdorff %.3f %% of the diagonal, topology %s",
+                  q->min_angle_degrees, q->min_quality, q->mean_quality, 100 * q->hausdorff_relative,
+                  q->topology_matches ? "as the input's" : "DIFFERS from the input's");
+    text += figures;
+  }
+  if (!result.cells.cells.empty()) text += "; " + std::to_string(result.cells.cells.size()) + " cells";
+  return text;
 }
 
 std::string describe(const vorocrust::MeshResult& result) {
@@ -174,9 +234,12 @@ QString FilterVoroCrustPlugin::filterInfo(FilterIDType filter) const {
              "material) into conforming Voronoi cells with VoroCrust: true Voronoi cells, convex, that "
              "conform to the surface without clipping. Writes the volume mesh into the output folder "
              "(mesh.vtu for ParaView, an OpenFOAM case, seeds.csv, the conforming surface) and adds layers "
-             "for the conforming surface and the seeds.<br><br>The library does not make seeds and cells yet: "
-             "until it does, this filter stops with its \"not yet\" message (the protecting balls are "
-             "available through <i>VoroCrust Protecting Balls</i>)." +
+             "for the conforming surface (faces coloured by the region pair they separate, which the face "
+             "attributes <i>back_region</i> and <i>front_region</i> hold, and the triangle quality as face "
+             "quality for MeshLab's histogram) and the seeds (label, kind and radius as vertex attributes, "
+             "the radius also as vertex quality, coloured by label).<br><br>The cells are computed only when "
+             "mesh.vtu or the OpenFOAM case is asked for: the surface and the seeds alone take the library "
+             "as far as its surface stage." +
              paper;
   }
   return {};
@@ -197,15 +260,20 @@ void FilterVoroCrustPlugin::initParameterSet(QAction* action, MeshDocument& md, 
   const MeshModel* m = md.mm();
   add_refinement_parameters(m, parameters);
   if (ID(action) != FP_VORONOI_MESH) return;
-  parameters.addParam(RichEnum(kInterior, 0, kInteriorModes, "Interior seeds",
+  parameters.addParam(RichEnum(kInterior, 0, interior_mode_names(), "Interior seeds",
                                "random: dart throwing with the Lipschitz sizing; lattice: a cubic lattice of the "
-                               "local size, giving hex-dominant cells; cvt: Lloyd iterations towards centroidal "
-                               "cells. (Passed on when the library's interior stage lands.)"));
+                               "local size, giving hex-dominant cells; cvt: random, then Lloyd iterations towards "
+                               "centroidal cells (paper section 2.5)."));
+  parameters.addParam(RichInt(kCvtIterations, vorocrust::MeshOptions().cvt_iterations, "CVT iterations",
+                              "Lloyd iterations of the cvt interior mode."));
   parameters.addParam(RichString(kOutputFolder, default_output_folder(m), "Output folder",
-                                 "Where the volume mesh files are written; made when missing."));
-  parameters.addParam(RichBool(kWriteVtu, true, "Write mesh.vtu", "A VTK unstructured grid of polyhedral cells."));
-  parameters.addParam(
-      RichBool(kWriteOpenFoam, true, "Write an OpenFOAM case", "case/ with constant/polyMesh, ready for checkMesh."));
+                                 "Where the files asked for are written (made when missing); files not asked for "
+                                 "are left as they are."));
+  parameters.addParam(RichBool(kWriteVtu, true, "Write mesh.vtu",
+                               "A VTK unstructured grid of polyhedral cells. Needs the cells: with neither this nor "
+                               "the OpenFOAM case, the run stops after the surface."));
+  parameters.addParam(RichBool(kWriteOpenFoam, true, "Write an OpenFOAM case",
+                               "case/ with constant/polyMesh, ready for checkMesh. Needs the cells."));
   parameters.addParam(
       RichBool(kWriteSeeds, true, "Write seeds.csv", "The seeds with label and radius: they define the whole mesh."));
   parameters.addParam(
@@ -272,26 +340,35 @@ void FilterVoroCrustPlugin::voronoi_mesh(MeshDocument& md, const RichParameterLi
   } else {
     layers.push_back(&current);
   }
-  Log("VoroCrust: %zu layer(s), interior seeds: %s", layers.size(),
-      qUtf8Printable(kInteriorModes[static_cast<int>(request.interior)]));
+  const vorocrust::MeshOptions& options = request.options;
+  if (options.stop_after == vorocrust::Stage::Cells) {
+    Log("VoroCrust: %zu layer(s), up to the cells, interior seeds: %s", layers.size(), to_string(options.interior));
+  } else {
+    Log("VoroCrust: %zu layer(s), up to the surface (no volume file asked for)", layers.size());
+  }
 
   vorocrust::SurfaceMesh surface = vorocrust::meshlab::surface_from_layers(layers);
   check_input(surface, [this](const std::string& line) { Log("VoroCrust: %s", line.c_str()); });
-  std::error_code ec;
-  std::filesystem::create_directories(request.output.folder, ec);
-  if (ec || !std::filesystem::is_directory(request.output.folder)) {
-    throw Error(Error::Kind::Output, "cannot make the output folder: " + (ec ? ec.message() : "not a folder"),
-                {.file = request.output.folder.string()});
+  make_output_folder(request.output);
+  const vorocrust::MeshResult result = [&] {
+    try {
+      return vorocrust::generate_mesh(surface, options, vorocrust::meshlab::progress_to(cb));
+    } catch (const Error& e) {
+      if (e.kind() != Error::Kind::NotImplemented) throw;
+      // The library's message is the news; what the filter can still give is the plugin's to say.
+      throw Error(e.kind(), e.message() +
+                                "\nThe surface and the seeds alone need no cells: untick \"Write mesh.vtu\" and "
+                                "\"Write an OpenFOAM case\".",
+                  e.where());
+    }
+  }();
+  const QStringList written = write_outputs(result, request.output);
+  const vorocrust::meshlab::ResultLayers added =
+      vorocrust::meshlab::add_result_layers(md, result, options.stop_after, current);
+  Log("VoroCrust: %s; %s", describe(result).c_str(), describe_surface(result).c_str());
+  Log("VoroCrust: layers \"%s\" and \"%s\"", qUtf8Printable(added.surface->label()),
+      qUtf8Printable(added.seeds->label()));
+  if (!written.isEmpty()) {
+    Log("VoroCrust: wrote %s in %s", qUtf8Printable(written.join(", ")), request.output.folder.string().c_str());
   }
-
-  const vorocrust::MeshResult result =
-      vorocrust::generate_mesh(surface, request.options, vorocrust::meshlab::progress_to(cb));
-
-  // The files. The library writes the balls today; mesh.vtu, case/, seeds.csv and surface.* are
-  // written here, each when its flag in request.output is set, once the library's writers exist.
-  vorocrust::write_balls_csv(result.balls, request.output.folder / "balls.csv");
-  vorocrust::write_balls_vtk(result.balls, request.output.folder / "balls.vtk");
-
-  vorocrust::meshlab::add_result_layers(md, result, vorocrust::Stage::Cells, current);
-  Log("VoroCrust: %s; files in %s", describe(result).c_str(), request.output.folder.string().c_str());
 }

@@ -6,7 +6,8 @@
 //
 // Both filters sit in "Filters > Remeshing, Simplification and Reconstruction":
 //   "VoroCrust Protecting Balls"  the refinement only: a point layer of ball centres with radius;
-//   "VoroCrust Voronoi Mesh"      the whole pipeline, with its volume mesh written to a folder.
+//   "VoroCrust Voronoi Mesh"      the pipeline to the surface, or to the cells when volume files are
+//                                 asked for: surface and seeds layers, the files in a folder.
 //
 // applyFilter never lets an exception out (MeshLab runs filters in its own process, and an
 // escaping exception would end the user's session): every failure becomes errorMessage, is

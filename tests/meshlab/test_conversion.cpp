@@ -1,6 +1,6 @@
 // The MeshLab adapter's conversions, on layers built in memory: what a layer becomes as the
 // library's input (faces kept, deleted ones skipped, selection as groups, layers welded, bad
-// coordinates refused) and what the balls become as a layer.
+// coordinates refused) and what the balls, the surface and the seeds become as layers.
 #include <common/meshmodel.h>
 
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 #include "layers_to_surface.hpp"
 #include "result_layers.hpp"
 #include "vorocrust/error.hpp"
+#include "vorocrust/quality.hpp"
 
 namespace {
 
@@ -147,6 +148,111 @@ TEST(ResultLayers, BallsBecomeAPointLayerWithTheirRadiiAndStrata) {
   EXPECT_NE(cm.vert[0].cC(), cm.vert[1].cC());  // colours tell the stratum types apart
   EXPECT_NE(cm.vert[1].cC(), cm.vert[2].cC());
   EXPECT_FALSE(cm.bbox.IsNull());
+}
+
+// A tetrahedron whose faces separate three region pairs: material 1 from the outside (two
+// faces), material 2 from the outside, material 2 from material 1.
+vorocrust::SurfaceMesh labelled_tetrahedron() {
+  vorocrust::SurfaceMesh s;
+  s.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  s.groups.push_back({"surface", ""});
+  for (const vorocrust::Triangle& t : {vorocrust::Triangle{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}) {
+    s.add_triangle(t, 0);
+  }
+  s.face_regions = {{1, 0}, {2, 0}, {1, 0}, {2, 1}};
+  s.region_names = {"outside", "material1", "material2"};
+  return s;
+}
+
+TEST(ResultLayers, TheSurfaceKeepsItsFacesWithRegionPairsQualityAndAColourPerPair) {
+  MeshDocument md;
+  MeshModel* source = fan_of_three(md, "tet.off");
+  const vorocrust::SurfaceMesh s = labelled_tetrahedron();
+  MeshModel* layer = vorocrust::meshlab::add_surface_layer(md, s, *source);
+  EXPECT_EQ(layer->label(), "tet VoroCrust surface");
+  EXPECT_TRUE(layer->hasDataMask(MeshModel::MM_FACEQUALITY));
+  EXPECT_TRUE(layer->hasDataMask(MeshModel::MM_FACECOLOR));
+  CMeshO& cm = layer->cm;
+  ASSERT_EQ(cm.vn, 4);
+  ASSERT_EQ(cm.fn, 4);
+  for (int v = 0; v < 4; ++v) {
+    EXPECT_EQ(cm.vert[v].cP(), CMeshO::CoordType(s.vertices[v].x(), s.vertices[v].y(), s.vertices[v].z()));
+  }
+  auto back = Allocator::FindPerFaceAttribute<float>(cm, vorocrust::meshlab::kBackRegionAttribute);
+  auto front = Allocator::FindPerFaceAttribute<float>(cm, vorocrust::meshlab::kFrontRegionAttribute);
+  ASSERT_TRUE(Allocator::IsValidHandle<float>(cm, back));
+  ASSERT_TRUE(Allocator::IsValidHandle<float>(cm, front));
+  const std::vector<double> quality = vorocrust::triangle_qualities(s);
+  for (int f = 0; f < 4; ++f) {
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(vcg::tri::Index(cm, cm.face[f].cV(k)), s.triangles[f][k]) << f;
+    EXPECT_EQ(back[f], float(s.face_regions[f].back));
+    EXPECT_EQ(front[f], float(s.face_regions[f].front));
+    EXPECT_EQ(cm.face[f].cQ(), float(quality[f]));
+  }
+  EXPECT_NEAR(cm.face[3].cQ(), 1.0f, 1e-6f);  // the equilateral face
+  EXPECT_LT(cm.face[0].cQ(), 0.9f);
+  // One colour per region pair: faces 0 and 2 share theirs, the other pairs differ.
+  EXPECT_EQ(cm.face[0].cC(), cm.face[2].cC());
+  EXPECT_NE(cm.face[0].cC(), cm.face[1].cC());
+  EXPECT_NE(cm.face[0].cC(), cm.face[3].cC());
+  EXPECT_NE(cm.face[1].cC(), cm.face[3].cC());
+  EXPECT_FALSE(cm.bbox.IsNull());
+  EXPECT_NEAR(cm.face[3].cN().Norm(), 1.0f, 1e-6f);  // normals for MeshLab's shading
+}
+
+TEST(ResultLayers, SeedsBecomeAPointLayerWithLabelKindAndRadius) {
+  MeshDocument md;
+  MeshModel* source = fan_of_three(md, "fan.off");
+  const std::vector<vorocrust::Seed> seeds{{{0, 0, 1}, 0, 0.5, vorocrust::SeedKind::Surface},
+                                           {{0, 0, -1}, 1, 0.5, vorocrust::SeedKind::Surface},
+                                           {{0, 0, -3}, 2, 0.75, vorocrust::SeedKind::Interior},
+                                           {{0, 0, 9}, 0, 2.5, vorocrust::SeedKind::Outside}};
+  MeshModel* layer = vorocrust::meshlab::add_seeds_layer(md, seeds, *source);
+  EXPECT_EQ(layer->label(), "fan VoroCrust seeds");
+  CMeshO& cm = layer->cm;
+  ASSERT_EQ(cm.vn, 4);
+  EXPECT_EQ(cm.fn, 0);
+  auto label = Allocator::FindPerVertexAttribute<float>(cm, vorocrust::meshlab::kLabelAttribute);
+  auto kind = Allocator::FindPerVertexAttribute<float>(cm, vorocrust::meshlab::kSeedKindAttribute);
+  auto radius = Allocator::FindPerVertexAttribute<float>(cm, vorocrust::meshlab::kRadiusAttribute);
+  ASSERT_TRUE(Allocator::IsValidHandle<float>(cm, label));
+  ASSERT_TRUE(Allocator::IsValidHandle<float>(cm, kind));
+  ASSERT_TRUE(Allocator::IsValidHandle<float>(cm, radius));
+  for (std::size_t k = 0; k < seeds.size(); ++k) {
+    const CVertexO& v = cm.vert[k];
+    EXPECT_EQ(v.cP(), CMeshO::CoordType(0, 0, float(seeds[k].position.z())));
+    EXPECT_EQ(v.cQ(), float(seeds[k].radius));
+    EXPECT_EQ(radius[k], float(seeds[k].radius));
+    EXPECT_EQ(label[k], float(seeds[k].region));
+    EXPECT_EQ(kind[k], float(static_cast<int>(seeds[k].kind)));
+  }
+  // Colour by label: both outside seeds alike, each material its own.
+  EXPECT_EQ(cm.vert[0].cC(), cm.vert[3].cC());
+  EXPECT_NE(cm.vert[0].cC(), cm.vert[1].cC());
+  EXPECT_NE(cm.vert[1].cC(), cm.vert[2].cC());
+  EXPECT_NE(cm.vert[0].cC(), cm.vert[2].cC());
+}
+
+TEST(ResultLayers, ARunToTheSurfaceAddsTheSurfaceAndTheSeedsWithTheSurfaceCurrent) {
+  MeshDocument md;
+  MeshModel* source = fan_of_three(md, "tet.off");
+  vorocrust::MeshResult result;
+  result.surface = labelled_tetrahedron();
+  result.seeds = {{{0.2, 0.2, 0.2}, 1, 0.1, vorocrust::SeedKind::Surface}};
+  result.balls = {{{0, 0, 0}, 0.5, vorocrust::StratumType::Corner, 0}};
+  const auto added = vorocrust::meshlab::add_result_layers(md, result, vorocrust::Stage::Surface, *source);
+  EXPECT_EQ(added.balls, nullptr);
+  ASSERT_NE(added.surface, nullptr);
+  ASSERT_NE(added.seeds, nullptr);
+  EXPECT_EQ(md.size(), 3);
+  EXPECT_EQ(md.mm(), added.surface);
+  EXPECT_EQ(added.surface->cm.fn, 4);
+  EXPECT_EQ(added.seeds->cm.vn, 1);
+
+  const auto balls = vorocrust::meshlab::add_result_layers(md, result, vorocrust::Stage::Balls, *source);
+  ASSERT_NE(balls.balls, nullptr);
+  EXPECT_EQ(balls.surface, nullptr);
+  EXPECT_EQ(md.size(), 4);
 }
 
 }  // namespace

@@ -12,11 +12,21 @@ Cases:
                        stratum types (vertex colours).
   invalid              inputs the library refuses make the filter fail with the library's message
                        and meshlabserver exit with its failure status, never crash.
-  voronoi-not-yet      the Voronoi Mesh filter fails cleanly with the library's "not yet" message.
+  voronoi-surface MODEL
+                       the Voronoi Mesh filter asked for no volume file runs the library to its
+                       surface stage and gives the surface and seeds the vorocrust program gives for
+                       the same seed: a surface layer with the same faces, topology, triangle quality
+                       (face quality) and a colour per region pair, a seeds layer with the same seeds,
+                       radii (vertex quality) and a colour per label, and the same files.
+  voronoi-vtu MODEL    the Voronoi Mesh filter asked for mesh.vtu: VTK reads it, its polyhedra fill
+                       the volume the output surface encloses. With --cells-not-yet (while the library
+                       makes no cells) it expects the library's "not yet" instead.
 
 Run by CTest as: python3 test_meshlab_plugin.py CASE [MODEL] --plugin ... (see parse_arguments).
 """
 import argparse
+import json
+import math
 import os
 import shutil
 import struct
@@ -31,7 +41,7 @@ STRATUM_COLOURS = {"corner": (220, 40, 40), "crease": (235, 190, 40), "patch": (
 
 def parse_arguments():
     p = argparse.ArgumentParser()
-    p.add_argument("case", choices=["balls", "invalid", "voronoi-not-yet"])
+    p.add_argument("case", choices=["balls", "invalid", "voronoi-surface", "voronoi-vtu"])
     p.add_argument("model", nargs="?")
     p.add_argument("--plugin", required=True, help="libfilter_vorocrust.so under test")
     p.add_argument("--meshlabserver", required=True, help="the installed meshlabserver")
@@ -40,6 +50,8 @@ def parse_arguments():
     p.add_argument("--models", required=True)
     p.add_argument("--data", required=True, help="tests/data")
     p.add_argument("--work", required=True, help="a folder of the test's own, emptied first")
+    p.add_argument("--cells-not-yet", action="store_true",
+                   help="voronoi-vtu: expect the library's \"not yet\" for the cells instead of a mesh.vtu")
     return p.parse_args()
 
 
@@ -68,13 +80,17 @@ def make_prefix(work):
     return copy, os.path.join(prefix_lib, "plugins")
 
 
-def read_ply_vertices(path):
-    """The vertex rows of a binary little-endian PLY, as dicts of property values."""
-    types = {"char": "b", "uchar": "B", "short": "h", "ushort": "H", "int": "i", "uint": "I",
-             "float": "f", "double": "d"}
+PLY_TYPES = {"char": "b", "uchar": "B", "short": "h", "ushort": "H", "int": "i", "uint": "I",
+             "float": "f", "double": "d", "int8": "b", "uint8": "B", "int16": "h", "uint16": "H",
+             "int32": "i", "uint32": "I", "float32": "f", "float64": "d"}
+
+
+def read_ply(path):
+    """The elements of a binary little-endian PLY, as {element: [row dicts]}; a list property
+    (a face's vertex_indices) is a tuple."""
     with open(path, "rb") as f:
         assert f.readline().strip() == b"ply", path
-        count, properties, element = 0, [], None
+        elements = []  # (name, count, [(property, type, list count type or None)])
         while True:
             words = f.readline().decode("ascii").split()
             if words == ["end_header"]:
@@ -82,22 +98,102 @@ def read_ply_vertices(path):
             if words[0] == "format":
                 assert words[1] == "binary_little_endian", words
             elif words[0] == "element":
-                element = words[1]
-                if element == "vertex":
-                    count = int(words[2])
-            elif words[0] == "property" and element == "vertex":
-                properties.append((words[2], types[words[1]]))
-        row = struct.Struct("<" + "".join(t for _, t in properties))
-        data = f.read(row.size * count)
-    names = [n for n, _ in properties]
-    return [dict(zip(names, values)) for values in row.iter_unpack(data)]
+                elements.append((words[1], int(words[2]), []))
+            elif words[0] == "property" and words[1] == "list":
+                elements[-1][2].append((words[4], PLY_TYPES[words[3]], PLY_TYPES[words[2]]))
+            elif words[0] == "property":
+                elements[-1][2].append((words[2], PLY_TYPES[words[1]], None))
+        data = f.read()
+    result, at = {}, 0
+    for name, count, properties in elements:
+        rows = []
+        if all(length is None for _, _, length in properties):  # fixed rows: one unpack
+            row = struct.Struct("<" + "".join(t for _, t, _ in properties))
+            names = [n for n, _, _ in properties]
+            rows = [dict(zip(names, values)) for values in row.iter_unpack(data[at:at + row.size * count])]
+            at += row.size * count
+        else:
+            for _ in range(count):
+                values = {}
+                for prop, t, length in properties:
+                    if length is None:
+                        (values[prop],), at = struct.unpack_from("<" + t, data, at), at + struct.calcsize(t)
+                    else:
+                        (n,), at = struct.unpack_from("<" + length, data, at), at + struct.calcsize(length)
+                        values[prop] = struct.unpack_from(f"<{n}{t}", data, at)
+                        at += n * struct.calcsize(t)
+                rows.append(values)
+        result[name] = rows
+    assert at == len(data), f"{path}: {len(data) - at} bytes after the last element"
+    return result
+
+
+def read_ply_vertices(path):
+    return read_ply(path)["vertex"]
+
+
+def read_csv_rows(path, header):
+    with open(path) as f:
+        got = f.readline().strip().split(",")
+        assert got == header, got
+        return [line.strip().split(",") for line in f if line.strip()]
+
+
+def triangle_quality(a, b, c):
+    """6 S / (sqrt(3) h p): the paper's triangle quality, 1 for the equilateral triangle."""
+    ab, bc, ca = math.dist(a, b), math.dist(b, c), math.dist(c, a)
+    u, v = [b[k] - a[k] for k in range(3)], [c[k] - a[k] for k in range(3)]
+    cross = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+    area = 0.5 * math.hypot(*cross)
+    longest = max(ab, bc, ca)
+    return min(1.0, 6 * area / (math.sqrt(3) * longest * 0.5 * (ab + bc + ca))) if area > 0 else 0.0
+
+
+def topology(faces):
+    """Components of faces joined through shared edges, as a sorted list of (Euler characteristic
+    V - E + F, closed) per component."""
+    parent = list(range(len(faces)))
+
+    def root(f):
+        while parent[f] != f:
+            parent[f] = parent[parent[f]]
+            f = parent[f]
+        return f
+
+    edge_faces = {}
+    for f, face in enumerate(faces):
+        for k in range(3):
+            edge_faces.setdefault(frozenset((face[k], face[(k + 1) % 3])), []).append(f)
+    for around in edge_faces.values():
+        for f in around[1:]:
+            parent[root(f)] = root(around[0])
+    components = {}
+    for f, face in enumerate(faces):
+        c = components.setdefault(root(f), {"v": set(), "e": set(), "f": 0, "closed": True})
+        c["v"].update(face)
+        c["f"] += 1
+    for edge, around in edge_faces.items():
+        c = components[root(around[0])]
+        c["e"].add(edge)
+        c["closed"] &= len(around) > 1
+    return sorted((len(c["v"]) - len(c["e"]) + c["f"], c["closed"]) for c in components.values())
+
+
+def enclosed_volume(vertices, faces):
+    """The signed volume a closed, outward oriented triangle surface encloses (divergence theorem)."""
+    total = 0.0
+    for a, b, c in faces:
+        (ax, ay, az), (bx, by, bz), (cx, cy, cz) = vertices[a], vertices[b], vertices[c]
+        total += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx)
+    return total / 6
 
 
 def read_balls_csv(path):
-    with open(path) as f:
-        header = f.readline().strip().split(",")
-        assert header == ["x", "y", "z", "radius", "stratum_type", "stratum_index"], header
-        return [line.strip().split(",") for line in f if line.strip()]
+    return read_csv_rows(path, ["x", "y", "z", "radius", "stratum_type", "stratum_index"])
+
+
+def read_seeds_csv(path):
+    return read_csv_rows(path, ["x", "y", "z", "label", "radius", "kind"])
 
 
 def off_from_obj(obj, off):
@@ -148,6 +244,12 @@ def balls_script(path, seed=SEED, lipschitz=0.25):
                   maxSize=("abs", 0.0), seed=seed)
 
 
+def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20):
+    return script(path, "VoroCrust Voronoi Mesh", lipschitz=0.25, sharpAngle=30.0, maxSize=("abs", 0.0), seed=seed,
+                  interior=("enum", 0), cvtIterations=cvt_iterations, outputFolder=folder, writeVtu=vtu,
+                  writeOpenFoam=openfoam, writeSeeds=True, writeSurface=True, allVisibleLayers=False)
+
+
 class MeshLabCase(unittest.TestCase):
     def setUp(self):
         self.work = os.path.abspath(ARGS.work)
@@ -179,24 +281,42 @@ class MeshLabCase(unittest.TestCase):
         self.assertFalse(os.path.exists(os.path.join(self.work, "out.ply")))
         return output
 
-    def test_case(self):
-        getattr(self, "case_" + ARGS.case.replace("-", "_"))()
-
-    def case_balls(self):
+    def model_for_meshlab(self):
+        """The case's model as MeshLab opens it: OBJ models as an OFF copy."""
         model = os.path.join(ARGS.models, ARGS.model)
         if model.endswith(".obj"):
             off = os.path.join(self.work, os.path.splitext(ARGS.model)[0] + ".off")
             off_from_obj(model, off)
             model = off
-        # What MeshLab loaded, in its single precision: the vorocrust program meshes that, so both
-        # start from the same coordinates (read in double precision, bunny's decimals give other balls).
+        return model
+
+    def cli_on_what_meshlab_loaded(self, model, stop_after):
+        """Runs `vorocrust mesh --stop-after STOP_AFTER` on what MeshLab loaded from MODEL, in its
+        single precision, so both start from the same coordinates (read in double precision,
+        bunny's decimals give other balls); returns the CLI's output folder."""
         loaded = os.path.join(self.work, "loaded.ply")
         status, output = self.meshlabserver("-i", model, "-o", loaded)
         self.assertEqual(status, 0, output[-3000:])
         cli_out = os.path.join(self.work, "cli")
-        r = subprocess.run([ARGS.cli, "mesh", loaded, "-o", cli_out, "--stop-after", "balls", "--seed", str(SEED),
+        r = subprocess.run([ARGS.cli, "mesh", loaded, "-o", cli_out, "--stop-after", stop_after, "--seed", str(SEED),
                             "--quiet"], capture_output=True, text=True, timeout=1800)
         self.assertEqual(r.returncode, 0, r.stderr)
+        return cli_out
+
+    def assert_points_close(self, got, expected, what):
+        """MeshLab's single-precision points against the library's double-precision ones."""
+        self.assertEqual(len(got), len(expected), what)
+        for k, (v, p) in enumerate(zip(got, expected)):
+            scale = max(map(abs, p))
+            for axis, value in zip("xyz", p):
+                self.assertAlmostEqual(v[axis], value, delta=1e-6 * scale, msg=f"{what} {k} {axis}")
+
+    def test_case(self):
+        getattr(self, "case_" + ARGS.case.replace("-", "_"))()
+
+    def case_balls(self):
+        model = self.model_for_meshlab()
+        cli_out = self.cli_on_what_meshlab_loaded(model, "balls")
         expected = read_balls_csv(os.path.join(cli_out, "balls.csv"))
 
         out = os.path.join(self.work, "balls.ply")
@@ -205,17 +325,121 @@ class MeshLabCase(unittest.TestCase):
         self.assertEqual(status, 0, output[-3000:])
         self.assertIn(f"VoroCrust: {len(expected)} balls", output)
         got = read_ply_vertices(out)
-        self.assertEqual(len(got), len(expected))
+        self.assert_points_close(got, [tuple(map(float, row[:3])) for row in expected], "ball")
         for k, (v, row) in enumerate(zip(got, expected)):
-            x, y, z, radius = map(float, row[:4])
-            scale = max(radius, abs(x), abs(y), abs(z))
-            for axis, value in zip("xyz", (x, y, z)):
-                self.assertAlmostEqual(v[axis], value, delta=1e-6 * scale, msg=f"ball {k} {axis}")
+            radius = float(row[3])
             self.assertAlmostEqual(v["quality"], radius, delta=1e-6 * radius, msg=f"ball {k} radius")
             self.assertEqual((v["red"], v["green"], v["blue"]), STRATUM_COLOURS[row[4]], f"ball {k} type")
         types = {t: sum(row[4] == t for row in expected) for t in STRATUM_COLOURS}
         print(f"{ARGS.model}: {len(got)} balls from MeshLab and from the vorocrust program with seed {SEED} "
               f"({types['corner']} corner, {types['crease']} crease, {types['patch']} patch); radii and centres agree")
+
+    def case_voronoi_surface(self):
+        model = self.model_for_meshlab()
+        cli_out = self.cli_on_what_meshlab_loaded(model, "surface")
+        cli_ply = read_ply(os.path.join(cli_out, "surface.ply"))
+        cli_vertices = [(v["x"], v["y"], v["z"]) for v in cli_ply["vertex"]]
+        cli_faces = [f["vertex_indices"] for f in cli_ply["face"]]
+        cli_seeds = read_seeds_csv(os.path.join(cli_out, "seeds.csv"))
+        with open(os.path.join(cli_out, "report.json")) as f:
+            cli_surface = json.load(f)["surface"]
+
+        # Layers: 0 the model, 1 the surface, 2 the seeds. No volume file is asked for, so the
+        # filter runs the library to its surface stage only.
+        folder = os.path.join(self.work, "voronoi")
+        surface_out, seeds_out = os.path.join(self.work, "surface_layer.ply"), os.path.join(self.work, "seeds_layer.ply")
+        mlx = voronoi_script(os.path.join(self.work, "voronoi.mlx"), folder, vtu=False, openfoam=False)
+        status, output = self.meshlabserver("-i", model, "-o", surface_out, "-l", "1", "-m", "fc", "fq",
+                                            "-o", seeds_out, "-l", "2", "-m", "vc", "vq", "-s", mlx)
+        self.assertEqual(status, 0, output[-3000:])
+        self.assertIn("up to the surface (no volume file asked for)", output)
+        self.assertIn(f"{len(cli_seeds)} seeds; a surface of {len(cli_faces)} triangles", output)
+        stem = os.path.splitext(os.path.basename(model))[0]
+        self.assertIn(f'VoroCrust: layers "{stem} VoroCrust surface" and "{stem} VoroCrust seeds"', output)
+
+        # The surface layer: the CLI's surface, in single precision.
+        layer = read_ply(surface_out)
+        faces = [f["vertex_indices"] for f in layer["face"]]
+        self.assertEqual(len(faces), len(cli_faces))
+        self.assertEqual(len(faces), cli_surface["triangles"])
+        expected_topology = sorted(zip(cli_surface["quality"]["topology"]["output"]["euler_characteristic"],
+                                       cli_surface["quality"]["topology"]["output"]["closed"]))
+        self.assertEqual(topology(faces), expected_topology)
+        self.assertEqual(faces, cli_faces)
+        self.assert_points_close(layer["vertex"], cli_vertices, "surface vertex")
+        # Face quality: Q of the CLI's (double-precision) triangles, and the report's summary of it.
+        qualities = [f["quality"] for f in layer["face"]]
+        for k, (q, face) in enumerate(zip(qualities, cli_faces)):
+            self.assertAlmostEqual(q, triangle_quality(*(cli_vertices[v] for v in face)), delta=1e-6, msg=f"face {k}")
+        figures = cli_surface["quality"]["triangle_quality"]
+        self.assertAlmostEqual(min(qualities), figures["min"], delta=1e-6)
+        self.assertAlmostEqual(sum(qualities) / len(qualities), figures["mean"], delta=1e-6)
+        # Face colours: one per region pair, as the CLI's surface.ply labels the faces.
+        colour_of_pair = {}
+        for k, (f, cli_face) in enumerate(zip(layer["face"], cli_ply["face"])):
+            pair = (cli_face["back_region"], cli_face["front_region"])
+            colour = colour_of_pair.setdefault(pair, (f["red"], f["green"], f["blue"]))
+            self.assertEqual((f["red"], f["green"], f["blue"]), colour, f"face {k} of region pair {pair}")
+        self.assertEqual(len(set(colour_of_pair.values())), len(colour_of_pair))
+
+        # The seeds layer: the CLI's seeds, radius as quality, a colour per label.
+        seeds = read_ply_vertices(seeds_out)
+        self.assertEqual(len(seeds), len(cli_seeds))
+        self.assert_points_close(seeds, [tuple(map(float, row[:3])) for row in cli_seeds], "seed")
+        colour_of_label = {}
+        for k, (v, row) in enumerate(zip(seeds, cli_seeds)):
+            radius = float(row[4])
+            self.assertAlmostEqual(v["quality"], radius, delta=1e-6 * radius, msg=f"seed {k} radius")
+            colour = colour_of_label.setdefault(row[3], (v["red"], v["green"], v["blue"]))
+            self.assertEqual((v["red"], v["green"], v["blue"]), colour, f"seed {k} of label {row[3]}")
+        self.assertEqual(len(set(colour_of_label.values())), len(colour_of_label))
+
+        # The files: equal input and seed, equal files, byte for byte; no volume file.
+        self.assertEqual(sorted(os.listdir(folder)), ["seeds.csv", "surface.obj", "surface.ply"])
+        for name in sorted(os.listdir(folder)):
+            with open(os.path.join(folder, name), "rb") as a, open(os.path.join(cli_out, name), "rb") as b:
+                self.assertTrue(a.read() == b.read(), f"{name} differs from the vorocrust program's")
+        print(f"{ARGS.model}: a surface of {len(faces)} triangles (components and Euler characteristics "
+              f"{expected_topology}), {len(seeds)} seeds, region pairs {sorted(colour_of_pair)}, Q min "
+              f"{min(qualities):.4f}, as the vorocrust program's with seed {SEED}")
+
+    def case_voronoi_vtu(self):
+        model = self.model_for_meshlab()
+        folder = os.path.join(self.work, "voronoi")
+        mlx = voronoi_script(os.path.join(self.work, "voronoi.mlx"), folder, vtu=True, openfoam=False)
+        if ARGS.cells_not_yet:
+            # Today: mesh.vtu needs the cells, and the library says they are not there yet; the
+            # filter fails with that message and writes nothing.
+            output = self.assert_fails_with(model, mlx, "VoroCrust: not yet implemented:", "Voronoi cells",
+                                            'untick "Write mesh.vtu"')
+            self.assertIn("up to the cells, interior seeds: random", output)
+            self.assertEqual(os.listdir(folder), [])
+            return
+        status, output = self.meshlabserver("-i", model, "-o", os.path.join(self.work, "surface_layer.ply"),
+                                            "-l", "1", "-s", mlx)
+        self.assertEqual(status, 0, output[-3000:])
+        import vtk  # python3-vtk9; imported here so the cases without cells need no VTK
+        reader = vtk.vtkXMLUnstructuredGridReader()
+        reader.SetFileName(os.path.join(folder, "mesh.vtu"))
+        reader.Update()
+        grid = reader.GetOutput()
+        seeds = read_seeds_csv(os.path.join(folder, "seeds.csv"))
+        material = [k for k, row in enumerate(seeds) if int(row[3]) > 0]
+        self.assertEqual(grid.GetNumberOfCells(), len(material))
+        self.assertEqual({grid.GetCellType(c) for c in range(grid.GetNumberOfCells())}, {vtk.VTK_POLYHEDRON})
+        sizes = vtk.vtkCellSizeFilter()
+        sizes.SetInputData(grid)
+        sizes.ComputeVolumeOn()
+        sizes.Update()
+        volumes = sizes.GetOutput().GetCellData().GetArray("Volume")
+        measured = sum(volumes.GetValue(c) for c in range(volumes.GetNumberOfTuples()))
+        surface = read_ply(os.path.join(folder, "surface.ply"))
+        enclosed = enclosed_volume([(v["x"], v["y"], v["z"]) for v in surface["vertex"]],
+                                   [f["vertex_indices"] for f in surface["face"]])
+        self.assertGreater(enclosed, 0)
+        self.assertAlmostEqual(measured, enclosed, delta=1e-6 * enclosed)
+        print(f"{ARGS.model}: VTK reads {grid.GetNumberOfCells()} polyhedra of total volume {measured:.9g}; "
+              f"the output surface encloses {enclosed:.9g}")
 
     def case_invalid(self):
         mlx = balls_script(os.path.join(self.work, "balls.mlx"))
@@ -230,21 +454,27 @@ class MeshLabCase(unittest.TestCase):
         for name, phrases in cases:
             with self.subTest(input=name):
                 self.assert_fails_with(os.path.join(data, name), mlx, *phrases)
+        cube = os.path.join(data, "invalid/cube.off")
         with self.subTest(input="a Lipschitz constant out of range"):
-            self.assert_fails_with(os.path.join(data, "invalid/cube.off"),
-                                   balls_script(os.path.join(self.work, "bad_l.mlx"), lipschitz=1.5),
+            self.assert_fails_with(cube, balls_script(os.path.join(self.work, "bad_l.mlx"), lipschitz=1.5),
                                    "VoroCrust: usage error:", "lipschitz must lie strictly between 0 and 1")
-
-    # CHANGE WHEN THE CELLS LAND: the full pipeline stops with NotImplemented today. Once seeds and
-    # cells exist, this case checks the surface and seeds layers and the written mesh.vtu instead.
-    def case_voronoi_not_yet(self):
+        # The Voronoi Mesh filter: the same validation, its own parameters and its output folder.
         folder = os.path.join(self.work, "voronoi")
-        mlx = script(os.path.join(self.work, "voronoi.mlx"), "VoroCrust Voronoi Mesh", lipschitz=0.25,
-                     sharpAngle=30.0, maxSize=("abs", 0.0), seed=SEED, interior=("enum", 0), outputFolder=folder,
-                     writeVtu=True, writeOpenFoam=True, writeSeeds=True, writeSurface=True, allVisibleLayers=False)
-        output = self.assert_fails_with(os.path.join(ARGS.models, "cgal_joint.off"), mlx,
-                                        "VoroCrust: not yet implemented:", "Voronoi cells")
-        self.assertIn("interior seeds: random", output)
+        with self.subTest(input="the Voronoi Mesh filter on a pierced cube"):
+            self.assert_fails_with(os.path.join(data, "invalid/cube_pierced.off"),
+                                   voronoi_script(os.path.join(self.work, "v.mlx"), folder, False, False),
+                                   "VoroCrust: invalid geometry:", "pairs of intersecting faces")
+        with self.subTest(input="negative CVT iterations"):
+            self.assert_fails_with(cube, voronoi_script(os.path.join(self.work, "v_cvt.mlx"), folder, False, False,
+                                                        cvt_iterations=-1),
+                                   "VoroCrust: usage error:", "cvt-iterations must be 0 or positive")
+        with self.subTest(input="an output folder that cannot be made"):
+            blocker = os.path.join(self.work, "a_file")
+            open(blocker, "w").close()
+            self.assert_fails_with(cube, voronoi_script(os.path.join(self.work, "v_out.mlx"),
+                                                        os.path.join(blocker, "out"), False, False),
+                                   "VoroCrust: output error:", "cannot make the output folder")
+        self.assertFalse(os.path.exists(folder))  # refused before anything was made
 
 
 if __name__ == "__main__":

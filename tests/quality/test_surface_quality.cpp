@@ -105,6 +105,22 @@ TEST(SurfaceQuality, DegenerateTrianglesGiveZeroQualityAndNoNaN) {
   for (double a : point.angles_degrees) EXPECT_EQ(a, 0.0);
 }
 
+TEST(SurfaceQuality, PerFaceQualitiesAreInFaceOrderAndSummariseToTheFigures) {
+  // Equilateral, right isosceles, flat: Q = 1, 2 sqrt(3) r / h with r = (2 - sqrt(2)) / 2, 0.
+  const SurfaceMesh m = triangles({Point(0, 0, 0), Point(1, 0, 0), Point(0.5, std::sqrt(3.0) / 2, 0),
+                                   Point(0, 1, 0), Point(2, 0, 0)},
+                                  {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}});
+  const std::vector<double> q = triangle_qualities(m);
+  ASSERT_EQ(q.size(), 3u);
+  EXPECT_NEAR(q[0], 1.0, 1e-12);
+  EXPECT_NEAR(q[1], std::sqrt(3.0) * (2 - std::sqrt(2.0)) / std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(q[2], 0.0);
+  const SurfaceQuality figures = of_itself(m);
+  EXPECT_EQ(figures.min_quality, q[2]);
+  EXPECT_NEAR(figures.mean_quality, (q[0] + q[1] + q[2]) / 3, 1e-15);
+  EXPECT_TRUE(triangle_qualities(SurfaceMesh{}).empty());
+}
+
 TEST(SurfaceQuality, AMeshAgainstItselfIsAtDistanceZeroWithTheSameTopology) {
   const SurfaceMesh bunny = read_mesh(test::model("igl_bunny.off"));
   const SurfaceQuality q = of_itself(bunny);

@@ -78,6 +78,11 @@ struct SurfaceQuality {
   bool topology_matches = false;  // same_topology(input_topology, output_topology)
 };
 
+// The triangle quality Q of every face of `mesh`, in face order, as defined above: what the
+// front ends show per face (MeshLab's per-face quality), the figures measure_surface_quality
+// summarises.
+std::vector<double> triangle_qualities(const SurfaceMesh& mesh);
+
 // Throws Error(InvalidGeometry) when either surface has no triangle or the input has no extent
 // (every vertex at one point), Error(Usage) for options out of range.
 SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMesh& output,

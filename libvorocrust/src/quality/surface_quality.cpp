@@ -67,6 +67,15 @@ Side prepare(const SurfaceMesh& mesh, std::size_t random_samples, std::uint64_t 
 
 }  // namespace
 
+std::vector<double> triangle_qualities(const SurfaceMesh& mesh) {
+  std::vector<double> quality;
+  quality.reserve(mesh.num_faces());
+  for (const Triangle& t : mesh.triangles) {
+    quality.push_back(triangle_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]).quality);
+  }
+  return quality;
+}
+
 SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMesh& output,
                                        const QualityOptions& options) {
   options.check();
