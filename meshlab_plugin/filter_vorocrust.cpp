@@ -350,18 +350,8 @@ void FilterVoroCrustPlugin::voronoi_mesh(MeshDocument& md, const RichParameterLi
   vorocrust::SurfaceMesh surface = vorocrust::meshlab::surface_from_layers(layers);
   check_input(surface, [this](const std::string& line) { Log("VoroCrust: %s", line.c_str()); });
   make_output_folder(request.output);
-  const vorocrust::MeshResult result = [&] {
-    try {
-      return vorocrust::generate_mesh(surface, options, vorocrust::meshlab::progress_to(cb));
-    } catch (const Error& e) {
-      if (e.kind() != Error::Kind::NotImplemented) throw;
-      // The library's message is the news; what the filter can still give is the plugin's to say.
-      throw Error(e.kind(), e.message() +
-                                "\nThe surface and the seeds alone need no cells: untick \"Write mesh.vtu\" and "
-                                "\"Write an OpenFOAM case\".",
-                  e.where());
-    }
-  }();
+  const vorocrust::MeshResult result =
+      vorocrust::generate_mesh(surface, options, vorocrust::meshlab::progress_to(cb));
   const QStringList written = write_outputs(result, request.output);
   const vorocrust::meshlab::ResultLayers added =
       vorocrust::meshlab::add_result_layers(md, result, options.stop_after, current);

@@ -19,8 +19,7 @@ Cases:
                        (face quality) and a colour per region pair, a seeds layer with the same seeds,
                        radii (vertex quality) and a colour per label, and the same files.
   voronoi-vtu MODEL    the Voronoi Mesh filter asked for mesh.vtu: VTK reads it, its polyhedra fill
-                       the volume the output surface encloses. With --cells-not-yet (while the library
-                       makes no cells) it expects the library's "not yet" instead.
+                       the volume the output surface encloses.
 
 Run by CTest as: python3 test_meshlab_plugin.py CASE [MODEL] --plugin ... (see parse_arguments).
 """
@@ -50,8 +49,6 @@ def parse_arguments():
     p.add_argument("--models", required=True)
     p.add_argument("--data", required=True, help="tests/data")
     p.add_argument("--work", required=True, help="a folder of the test's own, emptied first")
-    p.add_argument("--cells-not-yet", action="store_true",
-                   help="voronoi-vtu: expect the library's \"not yet\" for the cells instead of a mesh.vtu")
     return p.parse_args()
 
 
@@ -407,14 +404,6 @@ class MeshLabCase(unittest.TestCase):
         model = self.model_for_meshlab()
         folder = os.path.join(self.work, "voronoi")
         mlx = voronoi_script(os.path.join(self.work, "voronoi.mlx"), folder, vtu=True, openfoam=False)
-        if ARGS.cells_not_yet:
-            # Today: mesh.vtu needs the cells, and the library says they are not there yet; the
-            # filter fails with that message and writes nothing.
-            output = self.assert_fails_with(model, mlx, "VoroCrust: not yet implemented:", "Voronoi cells",
-                                            'untick "Write mesh.vtu"')
-            self.assertIn("up to the cells, interior seeds: random", output)
-            self.assertEqual(os.listdir(folder), [])
-            return
         status, output = self.meshlabserver("-i", model, "-o", os.path.join(self.work, "surface_layer.ply"),
                                             "-l", "1", "-s", mlx)
         self.assertEqual(status, 0, output[-3000:])

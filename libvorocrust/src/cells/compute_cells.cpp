@@ -216,9 +216,13 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
     const cells::Frame frame = make_frame(seeds);
     std::vector<cells::RawCell> raw = cells::compute_voronoi_cells(frame.normalized, cell_seeds);
     // Cells at odds with a neighbour after welding are computed again, nearest planes first,
-    // together with their neighbours: which side is wrong is not known. Twice at most.
+    // together with their neighbours (which side is wrong is not known). Where they still
+    // disagree, nearly cospherical seeds left a vertex split by more than the welding tolerance
+    // on one side only: the tolerance rises, to 1e-6 of the empty-sphere radius at most.
+    constexpr double kTolerances[] = {1e-9, 1e-9, 1e-8, 1e-7, 1e-6};
+    constexpr int kAttempts = static_cast<int>(std::size(kTolerances));
     for (int attempt = 0;; ++attempt) {
-      cells::WeldedVertices welded = cells::weld_vertices(raw, cell_seeds, cell_of_seed, frame);
+      cells::WeldedVertices welded = cells::weld_vertices(raw, cell_seeds, cell_of_seed, frame, kTolerances[attempt]);
       Assembly assembly{seeds, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
       std::vector<char> failed(raw.size(), 0);
       tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
@@ -231,7 +235,7 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
       mesh.points = std::move(welded.points);
       if (closed) assembly.build(mesh, failed);
       if (std::count(failed.begin(), failed.end(), 1) == 0) break;
-      if (attempt == 2) {
+      if (attempt == kAttempts - 1) {
         fail_on_lowest(failed, cell_seeds, closed ? "and a neighbour see their common face differently after welding"
                                                   : "is not closed after welding its degenerate vertices");
       }

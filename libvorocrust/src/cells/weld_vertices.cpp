@@ -13,17 +13,15 @@
 namespace vorocrust::cells {
 namespace {
 
-constexpr double kRelativeTolerance = 1e-9;
-
-double tolerance(const Point& vertex, const Point& seed) {
-  return kRelativeTolerance * std::max((vertex - seed).norm(), 1.0);
+double tolerance(const Point& vertex, const Point& seed, double relative) {
+  return relative * std::max((vertex - seed).norm(), 1.0);
 }
 
 // Unites each vertex of cell c's face toward cell d with its nearest counterpart on d's face
 // toward c, when they are within tolerance.
 void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
                         const std::vector<std::int32_t>& cell_of_seed, const Frame& frame,
-                        const std::vector<std::size_t>& first, UnionFind& sets, std::size_t c) {
+                        const std::vector<std::size_t>& first, double relative, UnionFind& sets, std::size_t c) {
   const RawCell& cell = cells[c];
   const Point& seed = frame.normalized[cell_seeds[c]];
   for (std::size_t f = 0; f < cell.num_faces(); ++f) {
@@ -51,7 +49,7 @@ void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Ind
       bool paired = true;
       for (std::size_t k = 0; k < size && paired; ++k) {
         const Point& u = cell.vertices[mine[k]];
-        paired = (other.vertices[theirs[(at + size - k) % size]] - u).norm() <= tolerance(u, seed);
+        paired = (other.vertices[theirs[(at + size - k) % size]] - u).norm() <= tolerance(u, seed, relative);
       }
       if (paired) {
         for (std::size_t k = 0; k < size; ++k) unite(mine[k], theirs[(at + size - k) % size]);
@@ -61,7 +59,7 @@ void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Ind
     // Otherwise (a degenerate vertex resolved differently on each side) each to its nearest.
     for (std::size_t k = 0; k < size; ++k) {
       const Point& u = cell.vertices[mine[k]];
-      double best = tolerance(u, seed);
+      double best = tolerance(u, seed, relative);
       std::uint32_t match = UINT32_MAX;
       for (std::size_t m = 0; m < other_size; ++m) {
         const double dist = (other.vertices[theirs[m]] - u).norm();
@@ -123,7 +121,8 @@ Point circumcentre(const Index* generators, std::size_t count, const std::vector
 }  // namespace
 
 WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
-                             const std::vector<std::int32_t>& cell_of_seed, const Frame& frame) {
+                             const std::vector<std::int32_t>& cell_of_seed, const Frame& frame,
+                             double relative_tolerance) {
   WeldedVertices w;
   w.first_instance.resize(cells.size() + 1, 0);
   for (std::size_t c = 0; c < cells.size(); ++c) w.first_instance[c + 1] = w.first_instance[c] + cells[c].vertices.size();
@@ -135,13 +134,13 @@ WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vecto
     const Point& seed = frame.normalized[cell_seeds[c]];
     for (std::size_t v = 0; v < cells[c].vertices.size(); ++v) {
       position[w.first_instance[c] + v] = cells[c].vertices[v];
-      tol[w.first_instance[c] + v] = tolerance(cells[c].vertices[v], seed);
+      tol[w.first_instance[c] + v] = tolerance(cells[c].vertices[v], seed, relative_tolerance);
     }
   });
 
   UnionFind sets(instances);
   tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
-    unite_across_faces(cells, cell_seeds, cell_of_seed, frame, w.first_instance, sets, c);
+    unite_across_faces(cells, cell_seeds, cell_of_seed, frame, w.first_instance, relative_tolerance, sets, c);
   });
   unite_close_points(position, tol, sets);
 

@@ -2,9 +2,10 @@
 //
 // weld_vertices(cells, cell_seeds, cell_of_seed, frame) numbers the vertices of every raw cell as
 // instances, cell after cell, and makes instances closer than their tolerance one point. The
-// tolerance of an instance is 1e-9 * max(R, 1) in the frame's units (seed spacing), R being its
-// distance to its cell's seed, the radius of its empty sphere: far above Voro++'s 1e-11, far below
-// any edge that is not an artefact of a degenerate vertex. Counterparts on the two sides of a
+// tolerance of an instance is relative_tolerance * max(R, 1) in the frame's units (seed spacing),
+// R being its distance to its cell's seed, the radius of its empty sphere. compute_cells starts
+// with 1e-9, far above Voro++'s 1e-11 and far below any edge that is not an artefact of a
+// degenerate vertex, and raises it only where cells still disagree. Counterparts on the two sides of a
 // face shared by two cells are united first, then all remaining points within tolerance of each
 // other, by a sweep in x; the unions are transitive, so every cell sees one point for a cluster.
 // Points are numbered in the order of their first instance.
@@ -39,6 +40,7 @@ struct WeldedVertices {
 };
 
 WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
-                             const std::vector<std::int32_t>& cell_of_seed, const Frame& frame);
+                             const std::vector<std::int32_t>& cell_of_seed, const Frame& frame,
+                             double relative_tolerance);
 
 }  // namespace vorocrust::cells
