@@ -9,8 +9,8 @@ echo
 echo "== build/cli/vorocrust info samples/cgal_joint.off"
 build/cli/vorocrust info samples/cgal_joint.off
 echo
-echo "== build/cli/vorocrust mesh samples/cgal_joint.off -o demo-output --stop-after surface"
-build/cli/vorocrust mesh samples/cgal_joint.off -o demo-output --stop-after surface
+echo "== build/cli/vorocrust mesh samples/cgal_joint.off -o demo-output"
+build/cli/vorocrust mesh samples/cgal_joint.off -o demo-output
 echo
 echo "== build/cli/vorocrust check-balls samples/cgal_joint.off demo-output/balls.csv"
 build/cli/vorocrust check-balls samples/cgal_joint.off demo-output/balls.csv
@@ -19,6 +19,8 @@ echo
 echo "== build/cli/vorocrust quality demo-output"
 build/cli/vorocrust quality demo-output
 echo
+echo "The Voronoi mesh is in demo-output/mesh.vtu (open it in ParaView; cell data: material, seed,"
+echo "volume) and demo-output/case/ (an OpenFOAM case: checkMesh -case demo-output/case)."
 echo "The surface is in demo-output/surface.obj and surface.ply (ParaView, MeshLab), its quality"
 echo "histogram in demo-output/quality.svg, the seeds in seeds.csv; the protecting balls in balls.csv"
 echo "and balls.vtk (in ParaView glyph the points as spheres scaled by 'radius'); report.json holds"
