@@ -34,6 +34,24 @@ class BallTree {
     double radius;
     std::uint32_t ball;
   };
+  // Whether some ball holds p strictly inside.
+  bool contains(const Point& p) const {
+    bool inside = false;
+    search(
+        p, [&](double d2, double max_radius, std::uint32_t) { return !inside && d2 < max_radius * max_radius; },
+        [&](const Sphere& s) { inside = inside || (s.centre - p).squaredNorm() < s.radius * s.radius; });
+    return inside;
+  }
+  // min over the balls q of r_q + L |p - q|: the largest radius a ball at p may have beside them
+  // under the Lipschitz condition (infinity when the tree is empty).
+  double lipschitz_bound(const Point& p, double L) const {
+    double best = std::numeric_limits<double>::infinity();
+    search(
+        p, [&](double d2, double, std::uint32_t) { return L * L * d2 < best * best; },
+        [&](const Sphere& s) { best = std::min(best, s.radius + L * (s.centre - p).norm()); });
+    return best;
+  }
+
   // Calls visit(sphere) for every sphere in the subtrees that keep(squared distance from p to
   // the subtree's box of centres, largest radius in it, newest ball in it) accepts; nearer
   // subtrees first.

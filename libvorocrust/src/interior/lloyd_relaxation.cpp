@@ -16,13 +16,6 @@ double lloyd_relaxation(std::vector<Seed>& seeds, const BallIndex& protecting_ba
   for (std::uint32_t i = 0; i < seeds.size(); ++i) {
     if (seeds[i].kind == SeedKind::Surface) surface_balls.insert(seeds[i].position, seeds[i].radius, i);
   }
-  const auto in_surface_ball = [&](const Point& p) {
-    bool inside = false;
-    surface_balls.search(
-        p, [&](double d2, double max_radius, std::uint32_t) { return !inside && d2 < max_radius * max_radius; },
-        [&](const BallTree::Sphere& s) { inside = inside || (s.centre - p).squaredNorm() < s.radius * s.radius; });
-    return inside;
-  };
   CellsOptions options;
   options.threads = threads;
   double largest_move = 0;
@@ -38,7 +31,7 @@ double lloyd_relaxation(std::vector<Seed>& seeds, const BallIndex& protecting_ba
       Point step = cell.centroid - seed.position;
       for (int halving = 0; halving < 4; ++halving, step *= 0.5) {
         const Point moved = seed.position + step;
-        if (protecting_balls.covers(moved) || in_surface_ball(moved)) continue;
+        if (protecting_balls.covers(moved) || surface_balls.contains(moved)) continue;
         largest_move = std::max(largest_move, step.norm() / seed.radius);
         seed.position = moved;
         break;

@@ -146,7 +146,8 @@ class InteriorSampler {
     std::vector<double> radii(seeds_.size());
     for (std::uint32_t i = 0; i < seeds_.size(); ++i) {
       const Point& z = seeds_[i].position;
-      radii[i] = std::min({seeds_[i].radius, lipschitz_bound(surface_tree_, z), lipschitz_bound(interior_tree_, z)});
+      radii[i] = std::min({seeds_[i].radius, surface_tree_.lipschitz_bound(z, options_.lipschitz),
+                           interior_tree_.lipschitz_bound(z, options_.lipschitz)});
     }
     bool shrank = false;
     for (std::uint32_t i = 0; i < seeds_.size(); ++i) {
@@ -210,15 +211,6 @@ class InteriorSampler {
           bound = std::min(bound, s.radius + L * std::sqrt(d2));
         });
     return inside;
-  }
-
-  double lipschitz_bound(const BallTree& tree, const Point& z) const {
-    double bound = kInfinity;
-    const double L = options_.lipschitz;
-    tree.search(
-        z, [&](double d2, double, std::uint32_t) { return L * L * d2 < bound * bound; },
-        [&](const BallTree::Sphere& s) { bound = std::min(bound, s.radius + L * (s.centre - z).norm()); });
-    return bound;
   }
 
   // Every ball that reaches within `reach` of z: seeds' balls and protecting balls.

@@ -24,11 +24,7 @@ void BallIndex::shrink(std::uint32_t i, double radius) {
 }
 
 double BallIndex::lipschitz_bound(StratumType type, const Point& p, double L) const {
-  double best = std::numeric_limits<double>::infinity();
-  trees_[static_cast<int>(type)].search(
-      p, [&](double d2, double, std::uint32_t) { return L * L * d2 < best * best; },
-      [&](const BallTree::Sphere& s) { best = std::min(best, s.radius + L * (s.centre - p).norm()); });
-  return best;
+  return trees_[static_cast<int>(type)].lipschitz_bound(p, L);
 }
 
 void BallIndex::centres_within(StratumType type, const Point& p, double distance, std::vector<std::uint32_t>& out) const {
@@ -53,13 +49,10 @@ void BallIndex::reaching(StratumType type, const Point& p, double margin, std::v
 }
 
 bool BallIndex::covers(const Point& p) const {
-  bool inside = false;
-  for (int type = 0; type < 3 && !inside; ++type) {
-    trees_[type].search(
-        p, [&](double d2, double max_radius, std::uint32_t) { return !inside && d2 < max_radius * max_radius; },
-        [&](const BallTree::Sphere& s) { inside = inside || (s.centre - p).squaredNorm() < s.radius * s.radius; });
+  for (int type = 0; type < 3; ++type) {
+    if (trees_[type].contains(p)) return true;
   }
-  return inside;
+  return false;
 }
 
 void BallIndex::lipschitz_violators(StratumType type, const Point& p, double radius, double L,
