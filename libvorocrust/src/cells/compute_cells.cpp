@@ -221,6 +221,7 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
     // on one side only: the tolerance rises, to 1e-6 of the empty-sphere radius at most.
     constexpr double kTolerances[] = {1e-9, 1e-9, 1e-8, 1e-7, 1e-6};
     constexpr int kAttempts = static_cast<int>(std::size(kTolerances));
+    std::vector<char> alone(raw.size(), 0);  // computed again already: doing it twice changes nothing
     for (int attempt = 0;; ++attempt) {
       cells::WeldedVertices welded = cells::weld_vertices(raw, cell_seeds, cell_of_seed, frame, kTolerances[attempt]);
       Assembly assembly{seeds, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
@@ -240,23 +241,36 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
                                                   : "is not closed after welding its degenerate vertices");
       }
       std::vector<std::size_t> again;
+      const auto recompute = [&](std::size_t c) {
+        if (!alone[c]) alone[c] = 1, again.push_back(c);
+      };
       for (std::size_t c = 0; c < raw.size(); ++c) {
         if (!failed[c]) continue;
-        again.push_back(c);
+        recompute(c);
         for (std::int32_t n : raw[c].neighbours) {
           if (n >= 0 && cell_of_seed[static_cast<std::size_t>(n)] != kNoCell) {
-            again.push_back(static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)]));
+            recompute(static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)]));
           }
         }
       }
       std::sort(again.begin(), again.end());
-      again.erase(std::unique(again.begin(), again.end()), again.end());
       cells::recompute_nearest_first(frame.normalized, cell_seeds, again, raw);
     }
     drop_unused_points(mesh);
     measure_cells(mesh);
   });
   return mesh;
+}
+
+std::size_t count_interior_faces(const VoronoiMesh& mesh) {
+  return static_cast<std::size_t>(
+      std::count_if(mesh.faces.begin(), mesh.faces.end(), [](const VoronoiFace& f) { return f.neighbour != kNoCell; }));
+}
+
+double total_volume(const VoronoiMesh& mesh) {
+  double volume = 0;
+  for (const VoronoiCell& c : mesh.cells) volume += c.volume;
+  return volume;
 }
 
 }  // namespace vorocrust
