@@ -35,13 +35,10 @@ int run_cells(const CellsArgs& args) {
   if (wants("openfoam")) write_openfoam_case(mesh, out / "case");
 
   if (!args.quiet) {
-    std::size_t interior = 0;
-    double volume = 0;
-    for (const VoronoiFace& f : mesh.faces) interior += f.neighbour != kNoCell;
-    for (const VoronoiCell& c : mesh.cells) volume += c.volume;
+    const std::size_t interior = count_interior_faces(mesh);
     std::printf("%zu seeds: %zu cells, %zu faces (%zu interior, %zu boundary), %zu points, volume %.10g, in %.3f s\n",
                 seeds.size(), mesh.cells.size(), mesh.faces.size(), interior, mesh.faces.size() - interior,
-                mesh.points.size(), volume, seconds);
+                mesh.points.size(), total_volume(mesh), seconds);
     if (wants("vtu")) std::printf("wrote %s\n", (out / "mesh.vtu").c_str());
     if (wants("openfoam")) std::printf("wrote %s/ (check it with: checkMesh -case %s)\n", (out / "case").c_str(), (out / "case").c_str());
   }

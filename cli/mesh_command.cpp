@@ -123,13 +123,10 @@ int run_mesh(const MeshArgs& args) {
     }
     if (cells && !args.quiet) {
       const InteriorStats& i = result->interior;
-      std::size_t interior_faces = 0;
-      double volume = 0;
-      for (const VoronoiFace& f : result->cells.faces) interior_faces += f.neighbour != kNoCell;
-      for (const VoronoiCell& c : result->cells.cells) volume += c.volume;
       std::fprintf(stderr, "vorocrust: %zu interior and %zu outside seeds (%s); %zu cells, %zu faces (%zu between "
                    "cells), volume %.10g\n", i.interior_seeds, i.outside_seeds, args.interior.c_str(),
-                   result->cells.cells.size(), result->cells.faces.size(), interior_faces, volume);
+                   result->cells.cells.size(), result->cells.faces.size(), count_interior_faces(result->cells),
+                   total_volume(result->cells));
       if (wants("vtu")) std::fprintf(stderr, "vorocrust: wrote %s (open it in ParaView)\n", (out / "mesh.vtu").c_str());
       if (wants("openfoam")) {
         std::fprintf(stderr, "vorocrust: wrote %s/ (check it with: checkMesh -case %s)\n", (out / "case").c_str(),

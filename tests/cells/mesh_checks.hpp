@@ -128,12 +128,6 @@ inline void expect_empty_spheres(const VoronoiMesh& m, const std::vector<Seed>& 
   }
 }
 
-inline double total_volume(const VoronoiMesh& m) {
-  double v = 0;
-  for (const VoronoiCell& c : m.cells) v += c.volume;
-  return v;
-}
-
 inline void expect_valid(const VoronoiMesh& m, const std::vector<Seed>& seeds) {
   ASSERT_FALSE(m.cells.empty());
   expect_closed_and_convex(m, 1e-9);

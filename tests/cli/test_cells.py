@@ -15,6 +15,9 @@ import unittest
 
 import vtk
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from vtk_volume import vtk_boundary_volume  # noqa: E402
+
 BINARY, MODELS = sys.argv[1:3]
 del sys.argv[1:3]
 
@@ -67,18 +70,6 @@ def vtk_cell_volumes(grid):
     f.ComputeVolumeOn()
     f.Update()
     return cell_array(f.GetOutput(), "Volume")
-
-
-def vtk_boundary_volume(grid):
-    """The volume VTK finds inside the grid's outer surface (its faces used by one cell only)."""
-    surface = vtk.vtkDataSetSurfaceFilter()
-    surface.SetInputData(grid)
-    triangles = vtk.vtkTriangleFilter()
-    triangles.SetInputConnection(surface.GetOutputPort())
-    mass = vtk.vtkMassProperties()
-    mass.SetInputConnection(triangles.GetOutputPort())
-    mass.Update()
-    return mass.GetVolume()
 
 
 def check_mesh(case):

@@ -70,7 +70,7 @@ void expect_bounded_by_the_surface(const MeshResult& r) {
   std::vector<Index> all(r.surface.num_faces());
   std::iota(all.begin(), all.end(), Index{0});
   const double enclosed = enclosed_volume(r.surface, all);
-  EXPECT_NEAR(test::total_volume(r.cells), enclosed, 1e-9 * enclosed);
+  EXPECT_NEAR(total_volume(r.cells), enclosed, 1e-9 * enclosed);
   std::size_t material = 0;
   for (const Seed& s : r.seeds) material += s.region != kOutsideRegion;
   EXPECT_EQ(r.cells.cells.size(), material);

@@ -62,4 +62,9 @@ struct VoronoiMesh {
 
 VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options = {});
 
+// The figures every summary of a mesh gives: faces with a cell on both sides, and the sum of the
+// cells' volumes.
+std::size_t count_interior_faces(const VoronoiMesh& mesh);
+double total_volume(const VoronoiMesh& mesh);
+
 }  // namespace vorocrust
