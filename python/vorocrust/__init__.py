@@ -52,7 +52,8 @@ __all__ = [
     "NotYetImplementedError", "OutputError", "Seeds", "Surface", "UnreadableInputError", "UsageError",
     "__version__", "compute_cells", "info", "measure_surface_quality", "merge_surfaces", "mesh",
     "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_outputs",
-    "write_seeds", "write_surface", "write_vtu", "OUTPUT_FORMATS", "INTERIOR_MODES", "STAGES",
+    "write_files", "write_seeds", "write_surface", "write_vtu", "OUTPUT_FORMATS", "VOLUME_FORMATS",
+    "INTERIOR_MODES", "STAGES",
 ]
 
 #: What a run can stop after, in pipeline order.
@@ -110,49 +111,69 @@ def mesh(model, *, lipschitz=0.25, sharp_angle=30.0, max_size=None, sizing=None,
         allow_self_intersections=bool(allow_self_intersections), progress=progress)
 
 
-def _formats_reached(result):
-    reached = ["balls", "report"]
-    if result.surface is not None:
-        reached += ["seeds", "obj", "ply", "svg"]
-    if result.cells is not None:
-        reached += ["vtu", "openfoam"]
-    return reached
+#: The formats written from the cells (the volume mesh), by name in OUTPUT_FORMATS.
+VOLUME_FORMATS = ("vtu", "openfoam")
+
+# The part of a run each format is written from.
+_FORMAT_PARTS = {"balls": "balls", "seeds": "seeds", "obj": "surface", "ply": "surface", "svg": "run",
+                 "report": "run", "vtu": "cells", "openfoam": "cells"}
 
 
-def write_outputs(result, folder, formats=None):
-    """Writes a run's results into `folder` (created when missing), as `vorocrust mesh` does.
+def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=None, cells=None):
+    """Writes the given parts into `folder` (created when missing) under the names
+    `vorocrust mesh` uses: the building block of write_outputs(), for parts that come from
+    elsewhere (seeds read back from a seeds.csv, cells from compute_cells()).
 
-    formats: names from OUTPUT_FORMATS ("balls", "seeds", "obj", "ply", "svg", "report",
-        "vtu", "openfoam"); None for every one the run reached. Asking for a part the run did
-        not make (cells after stop_after="surface") raises UsageError and writes nothing.
+    formats: names from OUTPUT_FORMATS, each needing its part: "balls" balls, "seeds" seeds,
+        "obj" and "ply" surface, "svg" and "report" run (a MeshResult), "vtu" and "openfoam"
+        cells. A format whose part is missing raises UsageError before anything is written.
 
-    Every file is written atomically (a temporary file renamed into place). Returns the paths
-    written, in the order of `formats`.
+    Every file is written atomically. Returns the paths written, in the order of `formats`.
     """
-    reached = _formats_reached(result)
-    formats = reached if formats is None else list(formats)
+    parts = {"run": run, "balls": balls, "seeds": seeds, "surface": surface, "cells": cells}
+    formats = list(formats)
     for name in formats:
         if name not in OUTPUT_FORMATS:
             raise _usage_error("unknown output format %r: expected one of %s" % (name, ", ".join(OUTPUT_FORMATS)))
-        if name not in reached:
-            raise _usage_error("the run stopped after %s: it made nothing to write as %r" % (result.stop_after, name))
+        if parts[_FORMAT_PARTS[name]] is None:
+            stage = " (the run stopped after %s)" % run.stop_after if run is not None else ""
+            raise _usage_error("nothing to write as %r: no %s%s" % (name, _FORMAT_PARTS[name], stage))
     os.makedirs(folder, exist_ok=True)
     writers = {
-        "balls": lambda: (write_balls(result.balls, _at(folder, "balls.csv")),
-                          write_balls(result.balls, _at(folder, "balls.vtk"))),
-        "seeds": lambda: write_seeds(result.seeds, _at(folder, "seeds.csv")),
-        "obj": lambda: write_surface(result.surface, _at(folder, "surface.obj")),
-        "ply": lambda: write_surface(result.surface, _at(folder, "surface.ply")),
-        "svg": lambda: result.write_quality_svg(_at(folder, "quality.svg")),
-        "report": lambda: result.write_report(_at(folder, "report.json")),
-        "vtu": lambda: write_vtu(result.cells, _at(folder, "mesh.vtu")),
-        "openfoam": lambda: write_openfoam(result.cells, _at(folder, "case")),
+        "balls": lambda: (write_balls(balls, _at(folder, "balls.csv")), write_balls(balls, _at(folder, "balls.vtk"))),
+        "seeds": lambda: write_seeds(seeds, _at(folder, "seeds.csv")),
+        "obj": lambda: write_surface(surface, _at(folder, "surface.obj")),
+        "ply": lambda: write_surface(surface, _at(folder, "surface.ply")),
+        "svg": lambda: run.write_quality_svg(_at(folder, "quality.svg")),
+        "report": lambda: run.write_report(_at(folder, "report.json")),
+        "vtu": lambda: write_vtu(cells, _at(folder, "mesh.vtu")),
+        "openfoam": lambda: write_openfoam(cells, _at(folder, "case")),
     }
     written = []
     for name in formats:
         writers[name]()
         written += [_at(folder, f) for f in OUTPUT_FORMATS[name]]
     return written
+
+
+def write_outputs(result, folder, formats=None, cells=None):
+    """Writes a run's results into `folder` (created when missing), as `vorocrust mesh` does.
+
+    formats: names from OUTPUT_FORMATS ("balls", "seeds", "obj", "ply", "svg", "report",
+        "vtu", "openfoam"); None for every one the run has the parts for. Asking for a part the
+        run did not make (cells after stop_after="surface") raises UsageError and writes
+        nothing.
+    cells: the Cells to write "vtu" and "openfoam" from, instead of result.cells: e.g.
+        compute_cells(result.seeds) for a run that stopped after the surface.
+
+    Every file is written atomically (a temporary file renamed into place). Returns the paths
+    written, in the order of `formats`.
+    """
+    parts = {"run": result, "balls": result.balls, "seeds": result.seeds, "surface": result.surface,
+             "cells": result.cells if cells is None else cells}
+    if formats is None:
+        formats = [name for name in OUTPUT_FORMATS if parts[_FORMAT_PARTS[name]] is not None]
+    return write_files(folder, formats, **parts)
 
 
 def _at(folder, name):

@@ -184,6 +184,15 @@ class Module(unittest.TestCase):
         for c in (0, cells.num_cells - 1):
             for f in cells.cell(c):
                 self.assertIn(c, (cells.owner[f], cells.neighbour[f]))
+        # A run's volume files from cells given apart, and the seeds alone.
+        again = self.out("given_cells")
+        vorocrust.write_outputs(self.result, again, ["vtu"], cells=cells)
+        self.assertEqual(read_bytes(os.path.join(again, "mesh.vtu")), read_bytes(os.path.join(out, "mesh.vtu")))
+        vorocrust.write_files(again, ["seeds", "openfoam"], seeds=self.result.seeds, cells=cells)
+        self.assertEqual(read_bytes(os.path.join(again, "seeds.csv")), read_bytes(seeds_csv))
+        with self.assertRaises(vorocrust.UsageError) as caught:
+            vorocrust.write_files(again, ["obj"], seeds=self.result.seeds)
+        self.assertEqual(str(caught.exception), "nothing to write as 'obj': no surface")
         # A seeds.csv path gives the same cells.
         again = vorocrust.compute_cells(seeds_csv, threads=1)
         np.testing.assert_array_equal(again.points, cells.points)
@@ -249,7 +258,7 @@ class Module(unittest.TestCase):
         out = os.path.join(self.dir, "refused")
         with self.assertRaises(vorocrust.UsageError) as caught:
             vorocrust.write_outputs(balls_only, out, ["balls", "seeds"])
-        self.assertIn("stopped after balls", str(caught.exception))
+        self.assertEqual(str(caught.exception), "nothing to write as 'seeds': no seeds (the run stopped after balls)")
         self.assertFalse(os.path.exists(out))
         with self.assertRaises(vorocrust.UsageError):
             vorocrust.write_outputs(self.result, out, ["stl"])
