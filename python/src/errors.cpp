@@ -39,7 +39,7 @@ void raise(const Error& e) {
   PyObject* cls = class_for(e.kind());
   py::object exception = py::reinterpret_borrow<py::object>(cls)(py::str(e.what()));
   exception.attr("kind") = to_string(e.kind());
-  exception.attr("message") = e.message();
+  exception.attr("_message") = e.message();
   const Error::Location& where = e.where();
   exception.attr("file") = where.file.empty() ? py::none() : py::object(py::str(where.file));
   exception.attr("line") = where.line == 0 ? py::none() : py::object(py::int_(where.line));
@@ -62,10 +62,26 @@ void bind_errors(py::module_& m) {
       PyExc_Exception, nullptr);
   if (base_class == nullptr) throw py::error_already_set();
   m.add_object("Error", py::handle(base_class));
+  // Defaults for errors raised from Python (the add-ons raise UsageError themselves): the kind
+  // of the class, no location, and the message as given.
+  const py::handle base(base_class);
+  base.attr("kind") = "error";
+  base.attr("file") = py::none();
+  base.attr("line") = py::none();
+  base.attr("face") = py::none();
+  base.attr("message") = py::module_::import("builtins").attr("property")(
+      py::cpp_function([](py::handle self) -> py::object {
+        const py::dict attributes = self.attr("__dict__");
+        if (attributes.contains("_message")) return attributes["_message"];
+        const py::tuple args = self.attr("args");
+        return args.empty() ? py::str("") : py::str(args[0]);
+      }),
+      py::none(), py::none(), "The message without the location prefix.");
   for (std::size_t i = 0; i < std::size(kErrorClasses); ++i) {
     const std::string qualified = std::string("vorocrust.") + kErrorClasses[i].name;
     kind_classes[i] = PyErr_NewExceptionWithDoc(qualified.c_str(), kErrorClasses[i].doc, base_class, nullptr);
     if (kind_classes[i] == nullptr) throw py::error_already_set();
+    py::handle(kind_classes[i]).attr("kind") = to_string(kErrorClasses[i].kind);
     m.add_object(kErrorClasses[i].name, py::handle(kind_classes[i]));
   }
   py::register_exception_translator([](std::exception_ptr p) {

@@ -134,10 +134,10 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
     formats = list(formats)
     for name in formats:
         if name not in OUTPUT_FORMATS:
-            raise _usage_error("unknown output format %r: expected one of %s" % (name, ", ".join(OUTPUT_FORMATS)))
+            raise UsageError("unknown output format %r: expected one of %s" % (name, ", ".join(OUTPUT_FORMATS)))
         if parts[_FORMAT_PARTS[name]] is None:
             stage = " (the run stopped after %s)" % run.stop_after if run is not None else ""
-            raise _usage_error("nothing to write as %r: no %s%s" % (name, _FORMAT_PARTS[name], stage))
+            raise UsageError("nothing to write as %r: no %s%s" % (name, _FORMAT_PARTS[name], stage))
     os.makedirs(folder, exist_ok=True)
     writers = {
         "balls": lambda: (write_balls(balls, _at(folder, "balls.csv")), write_balls(balls, _at(folder, "balls.vtk"))),
@@ -179,8 +179,3 @@ def write_outputs(result, folder, formats=None, cells=None):
 def _at(folder, name):
     return os.path.join(os.fspath(folder), name)
 
-
-def _usage_error(message):
-    error = UsageError(message)
-    error.kind, error.message, error.file, error.line, error.face = "usage error", message, None, None, None
-    return error

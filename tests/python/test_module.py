@@ -259,6 +259,8 @@ class Module(unittest.TestCase):
         with self.assertRaises(vorocrust.UsageError) as caught:
             vorocrust.write_outputs(balls_only, out, ["balls", "seeds"])
         self.assertEqual(str(caught.exception), "nothing to write as 'seeds': no seeds (the run stopped after balls)")
+        self.assertEqual((caught.exception.kind, caught.exception.message, caught.exception.file),
+                         ("usage error", str(caught.exception), None))
         self.assertFalse(os.path.exists(out))
         with self.assertRaises(vorocrust.UsageError):
             vorocrust.write_outputs(self.result, out, ["stl"])
