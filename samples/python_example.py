@@ -24,10 +24,9 @@ surface = vorocrust.read_mesh(model)
 info = vorocrust.info(surface)
 print("%s: %d vertices, %d triangles, genus %s" % (model, surface.num_vertices, surface.num_faces, info["genus"]))
 
-# How far to go: "cells" is the whole mesh. This version of the library stops at the surface
-# (asking for the cells raises vorocrust.NotYetImplementedError); the cells below are then built
-# from the surface seeds alone, as `vorocrust cells seeds.csv` builds them.
-STOP_AFTER = "surface"
+# How far to go: "cells" is the whole mesh; with "surface" the cells below are built from the
+# surface seeds alone, as `vorocrust cells seeds.csv` builds them.
+STOP_AFTER = "cells"
 
 # Progress: one line per stage ("refinement: patches, pass 3" counts as "refinement: patches").
 start = time.monotonic()
@@ -45,7 +44,10 @@ def progress(phase, fraction):
 result = vorocrust.mesh(model, seed=7, stop_after=STOP_AFTER, progress=progress)
 
 seeds, out_surface = result.seeds, result.surface
-print("seeds: %d (%d inside), surface: %d triangles" % (len(seeds), (seeds.labels > 0).sum(), out_surface.num_faces))
+kinds = list(seeds.kinds)
+print("seeds: %d surface, %d interior, %d outside; %d in the material; surface: %d triangles" % (
+    kinds.count("surface"), kinds.count("interior"), kinds.count("outside"), (seeds.labels > 0).sum(),
+    out_surface.num_faces))
 q = result.surface_quality
 print("surface quality: min angle %.1f deg, Q min %.3f, Hausdorff %.3f %% of the diagonal, topology %s" % (
     q["angles"]["min_degrees"], q["triangle_quality"]["min"], q["hausdorff"]["percent_of_bounding_box_diagonal"],
@@ -59,10 +61,6 @@ print("cells: %d, %d faces, %d points; volume %.6g (the input encloses %.6g)" % 
 sizes = np.diff(cells.cell_face_offsets)
 print("faces per cell: min %d, mean %.1f, max %d" % (sizes.min(), sizes.mean(), sizes.max()))
 
-# Files: what `vorocrust mesh` writes, and the volume mesh.
-written = vorocrust.write_outputs(result, out)
-if result.cells is None:
-    vorocrust.write_vtu(cells, os.path.join(out, "mesh.vtu"))
-    vorocrust.write_openfoam(cells, os.path.join(out, "case"))
-    written += [os.path.join(out, "mesh.vtu"), os.path.join(out, "case")]
+# Files: what `vorocrust mesh` writes, the volume mesh from these cells.
+written = vorocrust.write_outputs(result, out, cells=cells)
 print("wrote " + ", ".join(sorted(os.path.basename(p) for p in written)))

@@ -5,15 +5,15 @@ fresh folder) and VOROCRUST_TEST_SUMMARY (a JSON file for the driver's own check
 freecadcmd exits 0 even when a script raises, so every failure ends in sys.exit(1).
 """
 
+import dataclasses
 import json
 import os
 import sys
 import traceback
 
-# The one line to change when the library's cells stage lands: "cells" meshes the volume with
-# interior seeds; "surface" stops after the surface, the volume files then holding the cells
-# of the surface seeds alone.
-STOP_AFTER = "surface"
+# How far the runs go: "cells" meshes the volume with interior seeds; "surface" stops after the
+# surface, the volume files then holding the cells of the surface seeds alone. Both pass.
+STOP_AFTER = "cells"
 # One material per solid once the library meshes several (multi-material input); until then
 # every closed shell bounds the one material "inside".
 EXPECTED_MATERIALS = 1
@@ -92,6 +92,20 @@ def main():
     check(report["options"]["stop_after"] == STOP_AFTER, "report.json stage")
     check(report["input"]["groups"][0]["name"] == "Box" and report["input"]["groups"][1]["name"] == "Sphere",
           "input groups %s" % report["input"]["groups"])
+
+    # Stopping after the surface: the volume files hold the cells of the surface seeds, one per
+    # seed on the inside of a seed pair, filling the solids as well.
+    surface_only = VoroCrustMesher.voronoi_mesh(
+        [box, sphere], dataclasses.replace(parameters, stop_after="surface"),
+        output_dir=os.path.join(WORK, "surface_only"), formats=["vtu"])
+    check(surface_only.StopAfter == "surface", "stage %s" % surface_only.StopAfter)
+    check(surface_only.CellCount * 2 == surface_only.SeedCount, "cells %d of %d surface seeds" % (
+        surface_only.CellCount, surface_only.SeedCount))
+    check(surface_only.SurfaceTriangles == result.SurfaceTriangles, "the surface differs between the stages")
+    close(surface_only.Volume, input_volume, 0.02, "sum of the surface seeds' cell volumes")
+    check(os.path.isfile(os.path.join(WORK, "surface_only", "mesh.vtu")), "mesh.vtu of the surface stage")
+    surface_only.removeObjectsFromDocument()  # its surfaces and seeds
+    doc.removeObject(surface_only.Name)
 
     # Export writes the same volume mesh again: from the run in memory, then from the seeds the
     # saved document keeps.

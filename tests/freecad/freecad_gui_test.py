@@ -13,8 +13,8 @@ import sys
 import time
 import traceback
 
-# The one line to change when the library's cells stage lands (see freecad_app_test.py).
-STOP_AFTER = "surface"
+# How far the run goes (see freecad_app_test.py).
+STOP_AFTER = "cells"
 
 WORK = os.environ["VOROCRUST_TEST_WORK"]
 SUMMARY = os.environ["VOROCRUST_TEST_SUMMARY"]

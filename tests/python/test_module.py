@@ -266,19 +266,43 @@ class Module(unittest.TestCase):
             vorocrust.write_outputs(self.result, out, ["stl"])
         self.assertIsNone(self.result.cells)
 
-    def test_cells_flow_through_a_whole_run(self):
-        try:
-            result = vorocrust.mesh(BOX, seed=7, max_size=0.3)
-        except vorocrust.NotYetImplementedError as e:
-            self.skipTest("the library has no cells stage yet: %s" % e)
-        cells = result.cells
-        materials = int((result.seeds.labels > 0).sum())
-        self.assertEqual(cells.num_cells, materials)
-        self.assertAlmostEqual(cells.volumes.sum(), 1.0, delta=0.05)
-        out = self.out("whole")
-        written = vorocrust.write_outputs(result, out)
-        self.assertIn(os.path.join(out, "mesh.vtu"), written)
-        self.assertTrue(os.path.isfile(os.path.join(out, "case", "constant", "polyMesh", "owner")))
+    def test_whole_runs_write_the_programs_files(self):
+        for model, arguments, options in (
+                (JOINT, [], {}),
+                (BOX, ["--interior", "lattice", "--max-size", "0.3"], {"interior": "lattice", "max_size": 0.3}),
+                (BOX, ["--interior", "cvt", "--cvt-iterations", "3", "--max-size", "0.3"],
+                 {"interior": "cvt", "cvt_iterations": 3, "max_size": 0.3})):
+            with self.subTest(model=os.path.basename(model), options=options):
+                cli_out, out = self.out("whole_cli"), self.out("whole_module")
+                r = cli("mesh", model, "-o", cli_out, "--seed", "7", "-q", *arguments)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                result = vorocrust.mesh(model, seed=7, **options)
+                written = vorocrust.write_outputs(result, out)
+                self.assertIn(os.path.join(out, "mesh.vtu"), written)
+                for name in ("seeds.csv", "surface.obj", "mesh.vtu", "case/constant/polyMesh/points",
+                             "case/constant/polyMesh/faces", "case/constant/polyMesh/owner",
+                             "case/constant/polyMesh/neighbour", "case/constant/polyMesh/boundary",
+                             "case/constant/polyMesh/cellZones"):
+                    self.assertEqual(read_bytes(os.path.join(out, name)), read_bytes(os.path.join(cli_out, name)), name)
+                with open(os.path.join(cli_out, "report.json")) as f:
+                    cli_report = json.load(f)
+                report = result.report()
+                self.assertEqual(report["cells"], cli_report["cells"])
+                self.assertEqual(_without_seconds(report["interior"]), _without_seconds(cli_report["interior"]))
+                self.assertEqual(report["options"]["interior"], options.get("interior", "random"))
+                # The arrays: a cell per material seed, interior and outside seeds after the surface seeds.
+                seeds, cells = result.seeds, result.cells
+                kinds = list(seeds.kinds)
+                self.assertEqual(set(kinds), {"surface", "interior", "outside"})
+                surface_seeds = kinds.count("surface")
+                self.assertEqual(kinds[:surface_seeds], ["surface"] * surface_seeds)  # surface seeds first
+                self.assertEqual(cells.num_cells, int((seeds.labels > 0).sum()))
+                np.testing.assert_array_equal(seeds.labels[cells.cell_seeds], cells.materials)
+                total = cells.volumes.sum()
+                self.assertAlmostEqual(total, report["cells"]["volume"], delta=1e-12 * total)
+                self.assertAlmostEqual(closed_volume(cells), total, delta=1e-9 * total)
+                enclosed = sum(report["input"]["shell_volumes"])
+                self.assertAlmostEqual(total, enclosed, delta=0.01 * enclosed)
 
 
 class Example(unittest.TestCase):
