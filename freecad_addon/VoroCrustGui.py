@@ -109,27 +109,37 @@ class VoronoiMeshPanel:
 
         self.tolerance = spin(p.GetFloat("Tolerance", 0.1), 1e-4, 1e6, 0.05, 4,
                               "Largest distance between a Part shape and its triangles")
-        self.lipschitz = spin(p.GetFloat("Lipschitz", 0.25), 0.01, 0.99, 0.05, 2, "L: how fast ball radii may vary")
-        self.sharp_angle = spin(p.GetFloat("SharpAngle", 30.0), 1, 89, 1, 1,
+        defaults = VoroCrustMesher.Parameters()
+        self.lipschitz = spin(p.GetFloat("Lipschitz", defaults.lipschitz), 0.01, 0.99, 0.05, 2,
+                              "L: how fast ball radii may vary")
+        self.sharp_angle = spin(p.GetFloat("SharpAngle", defaults.sharp_angle), 1, 89, 1, 1,
                                 "Normal deviation in degrees above which an edge is a sharp crease")
         self.max_size = spin(p.GetFloat("MaxSize", 0.0), 0, 1e9, 1, 4, "Largest ball radius and cell size")
         self.max_size.setSpecialValueText("no bound")
         self.interior = QtGui.QComboBox()
         self.interior.addItems(list(vorocrust.INTERIOR_MODES))
-        self.interior.setCurrentText(p.GetString("Interior", "random"))
-        self.interior.setToolTip("How the volume away from the surface is seeded")
+        self.interior.setCurrentText(p.GetString("Interior", defaults.interior))
+        self.interior.setToolTip("How the volume away from the surface is seeded: random (graded from the surface "
+                                 "inward), lattice (hex-dominant cells), cvt (random, then Lloyd iterations)")
+        self.cvt_iterations = QtGui.QSpinBox()
+        self.cvt_iterations.setRange(0, 10000)
+        self.cvt_iterations.setValue(p.GetInt("CvtIterations", defaults.cvt_iterations))
+        self.cvt_iterations.setToolTip("Lloyd iterations of the cvt interior")
+        self.cvt_iterations.setEnabled(self.interior.currentText() == "cvt")
+        self.interior.currentTextChanged.connect(lambda mode: self.cvt_iterations.setEnabled(mode == "cvt"))
         self.seed = QtGui.QSpinBox()
         self.seed.setRange(0, 2**31 - 1)
-        self.seed.setValue(p.GetInt("Seed", 0))
+        self.seed.setValue(p.GetInt("Seed", defaults.seed))
         self.seed.setToolTip("Random seed: equal input, parameters and seed give equal meshes")
         self.stop_after = QtGui.QComboBox()
         self.stop_after.addItems(list(VoroCrustMesher.STAGES))
-        self.stop_after.setCurrentText(p.GetString("StopAfter", "cells"))
+        self.stop_after.setCurrentText(p.GetString("StopAfter", defaults.stop_after))
         self.stop_after.setToolTip("cells: the whole mesh; surface: the surface seeds and surface (the volume "
                                    "files then hold the cells of the surface seeds)")
         for label, widget in (("Tessellation tolerance", self.tolerance), ("Lipschitz L", self.lipschitz),
                               ("Sharp angle", self.sharp_angle), ("Maximum size", self.max_size),
-                              ("Interior", self.interior), ("Seed", self.seed), ("Stop after", self.stop_after)):
+                              ("Interior", self.interior), ("CVT iterations", self.cvt_iterations), ("Seed", self.seed),
+                              ("Stop after", self.stop_after)):
             grid.addRow(label, widget)
 
         folder_row, self.folder = _folder_row(p.GetString("OutputFolder", "") or
@@ -149,15 +159,15 @@ class VoronoiMeshPanel:
         layout.addWidget(self.progress)
         layout.addWidget(self.status)
         self._inputs = [self.tolerance, self.lipschitz, self.sharp_angle, self.max_size, self.interior, self.seed,
-                        self.stop_after, folder_row, formats]
+                        self.stop_after, folder_row, formats]  # the CVT box follows the interior mode
         return form
 
     def parameters(self):
         """The parameters as the panel shows them."""
         return VoroCrustMesher.Parameters(
             lipschitz=self.lipschitz.value(), sharp_angle=self.sharp_angle.value(), max_size=self.max_size.value(),
-            interior=self.interior.currentText(), seed=self.seed.value(), tolerance=self.tolerance.value(),
-            stop_after=self.stop_after.currentText())
+            interior=self.interior.currentText(), cvt_iterations=self.cvt_iterations.value(), seed=self.seed.value(),
+            tolerance=self.tolerance.value(), stop_after=self.stop_after.currentText())
 
     def chosen_formats(self):
         return [name for name, box in self.formats.items() if box.isChecked()]
@@ -169,6 +179,7 @@ class VoronoiMeshPanel:
         p.SetFloat("SharpAngle", parameters.sharp_angle)
         p.SetFloat("MaxSize", parameters.max_size)
         p.SetString("Interior", parameters.interior)
+        p.SetInt("CvtIterations", parameters.cvt_iterations)
         p.SetInt("Seed", parameters.seed)
         p.SetString("StopAfter", parameters.stop_after)
         p.SetString("OutputFolder", self.folder.text())
@@ -232,8 +243,10 @@ class VoronoiMeshPanel:
             self.progress.setValue(int(100 * fraction))
         if not self._cancel:
             self.status.setText("Meshing: %s" % self._state.get("phase"))
+            Gui.getMainWindow().statusBar().showMessage("VoroCrust: %s" % self._state.get("phase"))
         if not self._state.get("done"):
             return
+        Gui.getMainWindow().statusBar().clearMessage()
         self._timer.stop()
         self._worker.join()
         self._worker = None
@@ -266,6 +279,7 @@ class VoronoiMeshPanel:
     def _set_inputs_enabled(self, enabled):
         for widget in self._inputs:
             widget.setEnabled(enabled)
+        self.cvt_iterations.setEnabled(enabled and self.interior.currentText() == "cvt")
 
 
 class ExportPanel:

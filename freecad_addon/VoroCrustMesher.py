@@ -47,15 +47,15 @@ class Parameters:
         seeds.csv` builds them).
     """
 
-    lipschitz: float = 0.25
-    sharp_angle: float = 30.0
+    lipschitz: float = vorocrust.DEFAULT_OPTIONS["lipschitz"]
+    sharp_angle: float = vorocrust.DEFAULT_OPTIONS["sharp_angle"]
     max_size: float = 0.0
-    interior: str = "random"
-    cvt_iterations: int = 20
-    seed: int = 0
+    interior: str = vorocrust.DEFAULT_OPTIONS["interior"]
+    cvt_iterations: int = vorocrust.DEFAULT_OPTIONS["cvt_iterations"]
+    seed: int = vorocrust.DEFAULT_OPTIONS["seed"]
     tolerance: float = 0.1
-    stop_after: str = "cells"
-    threads: int = 0
+    stop_after: str = vorocrust.DEFAULT_OPTIONS["stop_after"]
+    threads: int = vorocrust.DEFAULT_OPTIONS["threads"]
 
     def mesh_options(self):
         """The keyword arguments of vorocrust.mesh()."""
@@ -246,6 +246,7 @@ class VoronoiMeshResult:
         add("App::PropertyFloat", "SharpAngle", "Parameters", "Normal deviation (degrees) above which an edge is sharp")
         add("App::PropertyFloat", "MaxSize", "Parameters", "Largest ball radius and cell size (0: no bound)")
         add("App::PropertyString", "Interior", "Parameters", "How the volume is seeded: random, lattice or cvt")
+        add("App::PropertyInteger", "CvtIterations", "Parameters", "Lloyd iterations of the cvt interior")
         add("App::PropertyInteger", "Seed", "Parameters", "Random seed")
         add("App::PropertyString", "StopAfter", "Parameters", "The last stage run: surface or cells")
         add("App::PropertyPath", "OutputFolder", "Output", "Where the files were written")
@@ -274,6 +275,7 @@ class VoronoiMeshResult:
         obj.SharpAngle = parameters.sharp_angle
         obj.MaxSize = parameters.max_size
         obj.Interior = parameters.interior
+        obj.CvtIterations = parameters.cvt_iterations
         obj.Seed = parameters.seed
         obj.StopAfter = result.stop_after
         obj.OutputFolder = output_dir

@@ -206,6 +206,20 @@ the same document as the CLI's OUTDIR/report.json.
                " cells>";
       });
 
+  {
+    // The library's defaults, so mesh() and the add-ons offer the same ones.
+    const MeshOptions defaults;
+    py::dict d;
+    d["lipschitz"] = defaults.lipschitz;
+    d["sharp_angle"] = defaults.sharp_angle_degrees;
+    d["smoothing_iterations"] = defaults.smoothing_iterations;
+    d["interior"] = to_string(defaults.interior);
+    d["cvt_iterations"] = defaults.cvt_iterations;
+    d["stop_after"] = stage_name(defaults.stop_after);
+    d["seed"] = defaults.seed;
+    d["threads"] = defaults.threads;
+    m.attr("DEFAULT_OPTIONS") = d;
+  }
   m.def(
       "_mesh",
       [](const py::object& model, double lipschitz, double sharp_angle, const py::object& max_size,

@@ -30,6 +30,7 @@ from ._vorocrust import (  # noqa: F401  (the public interface)
     Seeds,
     Surface,
     UnreadableInputError,
+    DEFAULT_OPTIONS,
     UsageError,
     __version__,
     compute_cells,
@@ -50,7 +51,7 @@ from . import _vorocrust
 __all__ = [
     "Balls", "Cancelled", "Cells", "Error", "InternalError", "InvalidGeometryError", "MeshResult",
     "NotYetImplementedError", "OutputError", "Seeds", "Surface", "UnreadableInputError", "UsageError",
-    "__version__", "compute_cells", "info", "measure_surface_quality", "merge_surfaces", "mesh",
+    "__version__", "DEFAULT_OPTIONS", "compute_cells", "info", "measure_surface_quality", "merge_surfaces", "mesh",
     "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_outputs",
     "write_files", "write_seeds", "write_surface", "write_vtu", "OUTPUT_FORMATS", "VOLUME_FORMATS",
     "INTERIOR_MODES", "STAGES",
@@ -60,6 +61,8 @@ __all__ = [
 STAGES = ("balls", "surface", "cells")
 #: How the volume away from the surface is seeded (paper 2.5).
 INTERIOR_MODES = ("random", "lattice", "cvt")
+#: DEFAULT_OPTIONS: the library's default for each option of mesh() (from the extension).
+
 #: What write_outputs() can write, with the files each one makes in the output folder.
 OUTPUT_FORMATS = {
     "balls": ("balls.csv", "balls.vtk"),
@@ -73,9 +76,11 @@ OUTPUT_FORMATS = {
 }
 
 
-def mesh(model, *, lipschitz=0.25, sharp_angle=30.0, max_size=None, sizing=None,
-         smoothing_iterations=0, interior="random", cvt_iterations=20, stop_after="cells", seed=0,
-         threads=0, allow_self_intersections=False, progress=None):
+def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_OPTIONS["sharp_angle"],
+         max_size=None, sizing=None, smoothing_iterations=DEFAULT_OPTIONS["smoothing_iterations"],
+         interior=DEFAULT_OPTIONS["interior"], cvt_iterations=DEFAULT_OPTIONS["cvt_iterations"],
+         stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
+         allow_self_intersections=False, progress=None):
     """Meshes a model: `vorocrust mesh` without the files. Returns a MeshResult.
 
     model: a file path, a list of paths (merged into one model, one group per file), a

@@ -87,6 +87,11 @@ def main():
     check(panel.chosen_formats() == ["seeds", "ply", "vtu", "openfoam"] or
           set(panel.chosen_formats()) == {"vtu", "openfoam", "seeds", "ply"}, "formats %s" % panel.chosen_formats())
 
+    check(not panel.cvt_iterations.isEnabled(), "CVT iterations offered for the random interior")
+    panel.interior.setCurrentText("cvt")
+    check(panel.cvt_iterations.isEnabled(), "CVT iterations not offered for the cvt interior")
+    panel.interior.setCurrentText("random")
+
     # Cancel during a run: it stops, nothing is written, the panel stays open for another try.
     ok, cancel = task_buttons()
     ok.click()
