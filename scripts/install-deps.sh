@@ -15,6 +15,10 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev python3
   # the cells' exports checked by the real readers: VTK's Python module and OpenFOAM's checkMesh
   python3-vtk9 openfoam
+  # the Python module (pybind11 over Debian's Python 3 and NumPy)
+  python3-dev python3-numpy pybind11-dev
+  # the FreeCAD workbench and its tests (freecadcmd, and freecad under xvfb-run, below)
+  freecad
   # the MeshLab plugin: MeshLab itself, what its headers need (Qt5, GLEW), dpkg-dev for the
   # `apt-get source` of scripts/fetch-meshlab-source.sh, and for meshlabserver's tests a virtual
   # X server with Mesa's software OpenGL

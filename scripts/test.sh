@@ -9,6 +9,6 @@ if [ ! -d ../shared/models ]; then
 fi
 bash scripts/install-deps.sh
 # The tests of every front end must run: a front end that cannot be built fails here.
-bash scripts/build.sh -DVOROCRUST_REQUIRE_MESHLAB_PLUGIN=ON
+bash scripts/build.sh -DVOROCRUST_REQUIRE_MESHLAB_PLUGIN=ON -DVOROCRUST_REQUIRE_PYTHON_MODULE=ON
 cd build
 ctest --output-on-failure --timeout 1200 -j 2

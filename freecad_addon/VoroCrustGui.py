@@ -1,0 +1,399 @@
+"""The VoroCrust workbench's commands and task panels.
+
+"Voronoi mesh" meshes the selected Mesh objects and Part solids: a task panel takes the
+parameters (remembered in FreeCAD's preferences, under Mod/VoroCrust), runs the mesher in a
+worker thread while a progress bar follows it, and its Cancel stops the run (nothing is written
+then). "Export Voronoi mesh" writes the files of a selected result again. Errors go to FreeCAD's
+report view and the panel, never to a crash. The work itself is VoroCrustMesher's.
+"""
+
+import os
+import threading
+
+import FreeCAD as App
+import FreeCADGui as Gui
+from PySide import QtCore, QtGui
+
+import VoroCrustMesher
+import VoroCrustResources
+import vorocrust
+
+PREFERENCES = "User parameter:BaseApp/Preferences/Mod/VoroCrust"
+COMMANDS = ["VoroCrust_VoronoiMesh", "VoroCrust_Export"]
+
+# The panel shown last, for scripts that drive the GUI (tests).
+_panels = {}
+
+
+def active_panel(kind="mesh"):
+    """The Voronoi mesh ("mesh") or export ("export") panel opened last, or None."""
+    return _panels.get(kind)
+
+
+def preferences():
+    return App.ParamGet(PREFERENCES)
+
+
+def report_error(error):
+    """An error as FreeCAD shows messages: in the report view, in the library's words."""
+    App.Console.PrintError("VoroCrust: %s\n" % error)
+
+
+def _format_boxes(layout, chosen):
+    """A check box per format, the files it makes in its label; returns {format: box}."""
+    boxes = {}
+    for name, files in VoroCrustMesher.FORMATS.items():
+        box = QtGui.QCheckBox("%s (%s)" % (name, ", ".join(files)))
+        box.setChecked(name in chosen)
+        layout.addWidget(box)
+        boxes[name] = box
+    return boxes
+
+
+def _folder_row(initial):
+    """A line edit with a Browse button; returns (widget, line edit)."""
+    row = QtGui.QWidget()
+    layout = QtGui.QHBoxLayout(row)
+    layout.setContentsMargins(0, 0, 0, 0)
+    edit = QtGui.QLineEdit(initial)
+    browse = QtGui.QPushButton("Browse...")
+
+    def choose():
+        folder = QtGui.QFileDialog.getExistingDirectory(row, "Output folder", edit.text())
+        if folder:
+            edit.setText(folder)
+
+    browse.clicked.connect(choose)
+    layout.addWidget(edit)
+    layout.addWidget(browse)
+    return row, edit
+
+
+class VoronoiMeshPanel:
+    """The task panel of "Voronoi mesh"."""
+
+    def __init__(self, objects):
+        self.objects = list(objects)
+        self.doc = self.objects[0].Document
+        self.result_object = None
+        self._worker = None
+        self._state = {}
+        self._cancel = False
+        self.form = self._build()
+        self._timer = QtCore.QTimer()
+        self._timer.setInterval(100)
+        self._timer.timeout.connect(self._poll)
+        _panels["mesh"] = self
+
+    def _build(self):
+        p = preferences()
+        form = QtGui.QWidget()
+        form.setWindowTitle("Voronoi mesh")
+        form.setWindowIcon(QtGui.QIcon(VoroCrustResources.icon("VoronoiMesh.svg")))
+        layout = QtGui.QVBoxLayout(form)
+
+        inputs = QtGui.QLabel("Input (each solid or mesh one material): " + ", ".join(o.Label for o in self.objects))
+        inputs.setWordWrap(True)
+        layout.addWidget(inputs)
+        grid = QtGui.QFormLayout()
+        layout.addLayout(grid)
+
+        def spin(value, low, high, step, decimals, tip):
+            box = QtGui.QDoubleSpinBox()
+            box.setRange(low, high)
+            box.setDecimals(decimals)
+            box.setSingleStep(step)
+            box.setValue(value)
+            box.setToolTip(tip)
+            return box
+
+        self.tolerance = spin(p.GetFloat("Tolerance", 0.1), 1e-4, 1e6, 0.05, 4,
+                              "Largest distance between a Part shape and its triangles")
+        defaults = VoroCrustMesher.Parameters()
+        self.lipschitz = spin(p.GetFloat("Lipschitz", defaults.lipschitz), 0.01, 0.99, 0.05, 2,
+                              "L: how fast ball radii may vary")
+        self.sharp_angle = spin(p.GetFloat("SharpAngle", defaults.sharp_angle), 1, 89, 1, 1,
+                                "Normal deviation in degrees above which an edge is a sharp crease")
+        self.max_size = spin(p.GetFloat("MaxSize", 0.0), 0, 1e9, 1, 4, "Largest ball radius and cell size")
+        self.max_size.setSpecialValueText("no bound")
+        self.interior = QtGui.QComboBox()
+        self.interior.addItems(list(vorocrust.INTERIOR_MODES))
+        self.interior.setCurrentText(p.GetString("Interior", defaults.interior))
+        self.interior.setToolTip("How the volume away from the surface is seeded: random (graded from the surface "
+                                 "inward), lattice (hex-dominant cells), cvt (random, then Lloyd iterations)")
+        self.cvt_iterations = QtGui.QSpinBox()
+        self.cvt_iterations.setRange(0, 10000)
+        self.cvt_iterations.setValue(p.GetInt("CvtIterations", defaults.cvt_iterations))
+        self.cvt_iterations.setToolTip("Lloyd iterations of the cvt interior")
+        self.cvt_iterations.setEnabled(self.interior.currentText() == "cvt")
+        self.interior.currentTextChanged.connect(lambda mode: self.cvt_iterations.setEnabled(mode == "cvt"))
+        self.seed = QtGui.QSpinBox()
+        self.seed.setRange(0, 2**31 - 1)
+        self.seed.setValue(p.GetInt("Seed", defaults.seed))
+        self.seed.setToolTip("Random seed: equal input, parameters and seed give equal meshes")
+        self.stop_after = QtGui.QComboBox()
+        self.stop_after.addItems(list(VoroCrustMesher.STAGES))
+        self.stop_after.setCurrentText(p.GetString("StopAfter", defaults.stop_after))
+        self.stop_after.setToolTip("cells: the whole mesh; surface: the surface seeds and surface (the volume "
+                                   "files then hold the cells of the surface seeds)")
+        for label, widget in (("Tessellation tolerance", self.tolerance), ("Lipschitz L", self.lipschitz),
+                              ("Sharp angle", self.sharp_angle), ("Maximum size", self.max_size),
+                              ("Interior", self.interior), ("CVT iterations", self.cvt_iterations), ("Seed", self.seed),
+                              ("Stop after", self.stop_after)):
+            grid.addRow(label, widget)
+
+        folder_row, self.folder = _folder_row(p.GetString("OutputFolder", "") or
+                                              VoroCrustMesher.default_output_dir(self.doc))
+        grid.addRow("Output folder", folder_row)
+        formats = QtGui.QGroupBox("Outputs")
+        formats_layout = QtGui.QVBoxLayout(formats)
+        chosen = p.GetString("Formats", ",".join(VoroCrustMesher.DEFAULT_FORMATS)).split(",")
+        self.formats = _format_boxes(formats_layout, chosen)
+        layout.addWidget(formats)
+
+        self.progress = QtGui.QProgressBar()
+        self.progress.setRange(0, 100)
+        self.progress.setValue(0)
+        self.status = QtGui.QLabel("OK runs the mesher; Cancel stops it.")
+        self.status.setWordWrap(True)
+        layout.addWidget(self.progress)
+        layout.addWidget(self.status)
+        self._inputs = [self.tolerance, self.lipschitz, self.sharp_angle, self.max_size, self.interior, self.seed,
+                        self.stop_after, folder_row, formats]  # the CVT box follows the interior mode
+        return form
+
+    def parameters(self):
+        """The parameters as the panel shows them."""
+        return VoroCrustMesher.Parameters(
+            lipschitz=self.lipschitz.value(), sharp_angle=self.sharp_angle.value(), max_size=self.max_size.value(),
+            interior=self.interior.currentText(), cvt_iterations=self.cvt_iterations.value(), seed=self.seed.value(),
+            tolerance=self.tolerance.value(), stop_after=self.stop_after.currentText())
+
+    def chosen_formats(self):
+        return [name for name, box in self.formats.items() if box.isChecked()]
+
+    def _remember(self, parameters):
+        p = preferences()
+        p.SetFloat("Tolerance", parameters.tolerance)
+        p.SetFloat("Lipschitz", parameters.lipschitz)
+        p.SetFloat("SharpAngle", parameters.sharp_angle)
+        p.SetFloat("MaxSize", parameters.max_size)
+        p.SetString("Interior", parameters.interior)
+        p.SetInt("CvtIterations", parameters.cvt_iterations)
+        p.SetInt("Seed", parameters.seed)
+        p.SetString("StopAfter", parameters.stop_after)
+        p.SetString("OutputFolder", self.folder.text())
+        p.SetString("Formats", ",".join(self.chosen_formats()))
+
+    def getStandardButtons(self):
+        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
+
+    def running(self):
+        """True while a run is under way."""
+        return self._worker is not None
+
+    def accept(self):
+        """OK: starts a run; the panel stays open until it ends."""
+        if self.running():
+            return False
+        parameters = self.parameters()
+        self._remember(parameters)
+        try:
+            model = VoroCrustMesher.model_of(self.objects, parameters.tolerance)
+        except Exception as e:  # the library's and FreeCAD's errors alike become messages
+            self._failed(e)
+            return False
+        self._cancel = False
+        self._state = {"phase": "starting", "fraction": None, "done": False}
+        self._worker = threading.Thread(target=self._work, args=(model, parameters), daemon=True)
+        self._set_inputs_enabled(False)
+        self.status.setText("Meshing...")
+        self._worker.start()
+        self._timer.start()
+        return False
+
+    def reject(self):
+        """Cancel: stops a run (which then writes nothing), or closes the panel."""
+        if self.running():
+            self._cancel = True
+            self.status.setText("Cancelling...")
+            return False
+        return True
+
+    def _work(self, model, parameters):
+        # The worker thread: only the library runs here, no FreeCAD object is touched.
+        try:
+            self._state["result"] = VoroCrustMesher.run(model, parameters, self._progress)
+            self._state["parameters"] = parameters
+        except BaseException as e:  # handed to the GUI thread, which reports it
+            self._state["error"] = e
+        finally:
+            self._state["done"] = True
+
+    def _progress(self, phase, fraction):
+        self._state["phase"], self._state["fraction"] = phase, fraction
+        return not self._cancel
+
+    def _poll(self):
+        fraction = self._state.get("fraction")
+        if fraction is None:
+            self.progress.setRange(0, 0)  # busy: the library does not know how far it is
+        else:
+            self.progress.setRange(0, 100)
+            self.progress.setValue(int(100 * fraction))
+        if not self._cancel:
+            self.status.setText("Meshing: %s" % self._state.get("phase"))
+            Gui.getMainWindow().statusBar().showMessage("VoroCrust: %s" % self._state.get("phase"))
+        if not self._state.get("done"):
+            return
+        Gui.getMainWindow().statusBar().clearMessage()
+        self._timer.stop()
+        self._worker.join()
+        self._worker = None
+        self.progress.setRange(0, 100)
+        self.progress.setValue(0)
+        self._set_inputs_enabled(True)
+        error = self._state.get("error")
+        if isinstance(error, vorocrust.Cancelled):
+            App.Console.PrintWarning("VoroCrust: cancelled; nothing was written\n")
+            self.status.setText("Cancelled; nothing was written.")
+            return
+        if error is not None:
+            self._failed(error)
+            return
+        try:
+            self.result_object = VoroCrustMesher.add_result(self.doc, self.objects, self._state["parameters"],
+                                                           self._state["result"], self.folder.text(),
+                                                           self.chosen_formats())
+        except Exception as e:
+            self._failed(e)
+            return
+        self.progress.setValue(100)
+        self.status.setText("Done: %s" % self.result_object.Label)
+        Gui.Control.closeDialog()
+
+    def _failed(self, error):
+        report_error(error)
+        self.status.setText("Failed: %s" % error)
+
+    def _set_inputs_enabled(self, enabled):
+        for widget in self._inputs:
+            widget.setEnabled(enabled)
+        self.cvt_iterations.setEnabled(enabled and self.interior.currentText() == "cvt")
+
+
+class ExportPanel:
+    """The task panel of "Export Voronoi mesh": a folder and the formats to write there."""
+
+    def __init__(self, obj):
+        self.obj = obj
+        self.written = []
+        self.form = QtGui.QWidget()
+        self.form.setWindowTitle("Export Voronoi mesh")
+        self.form.setWindowIcon(QtGui.QIcon(VoroCrustResources.icon("ExportVoronoiMesh.svg")))
+        layout = QtGui.QVBoxLayout(self.form)
+        layout.addWidget(QtGui.QLabel("Result: " + obj.Label))
+        folder_row, self.folder = _folder_row(preferences().GetString("ExportFolder", "") or obj.OutputFolder)
+        layout.addWidget(folder_row)
+        box = QtGui.QGroupBox("Outputs")
+        self.formats = _format_boxes(QtGui.QVBoxLayout(box), list(obj.Formats) or VoroCrustMesher.DEFAULT_FORMATS)
+        layout.addWidget(box)
+        self.status = QtGui.QLabel("")
+        self.status.setWordWrap(True)
+        layout.addWidget(self.status)
+        _panels["export"] = self
+
+    def getStandardButtons(self):
+        return int(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
+
+    def accept(self):
+        formats = [name for name, box in self.formats.items() if box.isChecked()]
+        preferences().SetString("ExportFolder", self.folder.text())
+        QtGui.QApplication.setOverrideCursor(QtCore.Qt.WaitCursor)
+        try:
+            self.written = VoroCrustMesher.export_result(self.obj, self.folder.text(), formats)
+        except Exception as e:
+            report_error(e)
+            self.status.setText("Failed: %s" % e)
+            return False
+        finally:
+            QtGui.QApplication.restoreOverrideCursor()
+        for path in self.written:
+            App.Console.PrintMessage("VoroCrust: wrote %s\n" % path)
+        return True
+
+    def reject(self):
+        return True
+
+
+class VoronoiMeshCommand:
+    """Meshes the selected Mesh objects and Part solids."""
+
+    def GetResources(self):
+        return {"Pixmap": VoroCrustResources.icon("VoronoiMesh.svg"), "MenuText": "Voronoi mesh",
+                "ToolTip": "Conforming Voronoi mesh of the selected Mesh objects and Part solids: the output "
+                           "surface, the seeds and the volume mesh files"}
+
+    def IsActive(self):
+        return App.ActiveDocument is not None and any(
+            VoroCrustMesher.is_meshable(o) for o in Gui.Selection.getSelection())
+
+    def Activated(self):
+        objects = [o for o in Gui.Selection.getSelection() if VoroCrustMesher.is_meshable(o)]
+        if not objects:
+            report_error("select Mesh objects or Part solids to mesh")
+            return
+        if Gui.Control.activeDialog():
+            report_error("close the open task panel first")
+            return
+        Gui.Control.showDialog(VoronoiMeshPanel(objects))
+
+
+class ExportCommand:
+    """Writes the files of a selected Voronoi mesh result again."""
+
+    def GetResources(self):
+        return {"Pixmap": VoroCrustResources.icon("ExportVoronoiMesh.svg"), "MenuText": "Export Voronoi mesh",
+                "ToolTip": "Write the selected Voronoi mesh's files (VTU, OpenFOAM, seeds, surface) to a folder"}
+
+    def IsActive(self):
+        return any(VoroCrustMesher.is_result(o) for o in Gui.Selection.getSelection())
+
+    def Activated(self):
+        results = [o for o in Gui.Selection.getSelection() if VoroCrustMesher.is_result(o)]
+        if not results:
+            report_error("select a Voronoi mesh result to export")
+            return
+        if Gui.Control.activeDialog():
+            report_error("close the open task panel first")
+            return
+        Gui.Control.showDialog(ExportPanel(results[0]))
+
+
+class ViewProviderVoronoiMesh:
+    """Shows a VoronoiMesh result in the tree with its icon and its surfaces and seeds below it."""
+
+    def __init__(self, vobj):
+        vobj.Proxy = self
+
+    def attach(self, vobj):
+        self.Object = vobj.Object
+
+    def getIcon(self):
+        return VoroCrustResources.icon("VoronoiMeshResult.svg")
+
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        return None
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        return None
+
+
+Gui.addCommand("VoroCrust_VoronoiMesh", VoronoiMeshCommand())
+Gui.addCommand("VoroCrust_Export", ExportCommand())

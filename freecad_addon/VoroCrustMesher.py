@@ -1,0 +1,353 @@
+"""VoroCrust in FreeCAD without the GUI: Mesh objects and Part solids in, a Voronoi mesh out.
+
+    import VoroCrustMesher
+    result = VoroCrustMesher.voronoi_mesh([box, sphere], Parameters(max_size=2, seed=7),
+                                          output_dir="/tmp/out")
+
+adds to the document a "VoronoiMesh" group holding one Mesh object per material surface and the
+seeds as a Points object, and writes the chosen files (VTU, OpenFOAM case, seeds.csv, surface
+OBJ/PLY, ...). Everything geometric is done by the `vorocrust` module (libvorocrust); this file
+only converts FreeCAD objects to its arrays and its results to document objects.
+
+Materials: every Part solid and every Mesh object is one part of the model, named after its
+object (a shape with several solids gives "Label/solid N"), merged as the library merges several
+input files: one face group each, vertices with exactly equal coordinates shared. The library
+will tell materials apart by these groups when it meshes several materials; until then every
+closed shell bounds the one material "inside".
+"""
+
+import dataclasses
+import os
+import shutil
+import tempfile
+
+import FreeCAD as App
+import numpy as np
+
+import vorocrust
+
+#: What the panel and voronoi_mesh() can write, by format name: the module's formats, so
+#: formats the library gains appear here by themselves.
+FORMATS = dict(vorocrust.OUTPUT_FORMATS)
+#: Written when nothing else is asked for: the volume mesh and the compact seeds.
+DEFAULT_FORMATS = ("vtu", "openfoam", "seeds", "ply")
+#: Stages the run can stop after; "cells" is the whole mesh.
+STAGES = ("surface", "cells")
+
+
+@dataclasses.dataclass
+class Parameters:
+    """The options of a run, as `vorocrust mesh` has them (see vorocrust.mesh()), plus the
+    tessellation tolerance of Part shapes.
+
+    tolerance: largest distance (model units) between a Part shape and its triangles.
+    max_size: largest ball radius and cell size; 0 for no bound.
+    stop_after: "cells" for the whole mesh, "surface" for the surface seeds and surface (the
+        volume formats are then the cells of the surface seeds alone, as `vorocrust cells
+        seeds.csv` builds them).
+    """
+
+    lipschitz: float = vorocrust.DEFAULT_OPTIONS["lipschitz"]
+    sharp_angle: float = vorocrust.DEFAULT_OPTIONS["sharp_angle"]
+    max_size: float = 0.0
+    interior: str = vorocrust.DEFAULT_OPTIONS["interior"]
+    cvt_iterations: int = vorocrust.DEFAULT_OPTIONS["cvt_iterations"]
+    seed: int = vorocrust.DEFAULT_OPTIONS["seed"]
+    tolerance: float = 0.1
+    stop_after: str = vorocrust.DEFAULT_OPTIONS["stop_after"]
+    threads: int = vorocrust.DEFAULT_OPTIONS["threads"]
+
+    def mesh_options(self):
+        """The keyword arguments of vorocrust.mesh()."""
+        return dict(lipschitz=self.lipschitz, sharp_angle=self.sharp_angle,
+                    max_size=self.max_size if self.max_size > 0 else None, interior=self.interior,
+                    cvt_iterations=self.cvt_iterations, stop_after=self.stop_after, seed=self.seed,
+                    threads=self.threads)
+
+
+def is_meshable(obj):
+    """True for the objects a run takes: Mesh objects with facets and Part objects with a shape."""
+    if obj.isDerivedFrom("Mesh::Feature"):
+        return obj.Mesh.CountFacets > 0
+    return obj.isDerivedFrom("Part::Feature") and not obj.Shape.isNull() and len(obj.Shape.Faces) > 0
+
+
+def _arrays(points, triangles):
+    return (np.array([(p.x, p.y, p.z) for p in points], dtype=np.float64).reshape(-1, 3),
+            np.array(triangles, dtype=np.int64).reshape(-1, 3))
+
+
+def model_parts(objects, tolerance):
+    """The model's parts as (name, vorocrust.Surface): one per Mesh object, one per solid of a
+    Part object (its faces, when it has no solid), in global coordinates. Part shapes are
+    tessellated so that no triangle lies farther than `tolerance` from the shape."""
+    import Part  # only where Part objects are meshed
+
+    if tolerance <= 0:
+        raise vorocrust.UsageError("the tessellation tolerance must be positive, got %g" % tolerance)
+    parts = []
+    for obj in objects:
+        if obj.isDerivedFrom("Mesh::Feature"):
+            points, facets = obj.Mesh.Topology  # placement applied
+            parts.append((obj.Label, vorocrust.Surface(*_arrays(points, facets), name=obj.Label)))
+        elif obj.isDerivedFrom("Part::Feature"):
+            shape = Part.getShape(obj)
+            pieces = shape.Solids or [shape]
+            for k, piece in enumerate(pieces):
+                name = obj.Label if len(pieces) == 1 else "%s/solid %d" % (obj.Label, k + 1)
+                points, triangles = piece.tessellate(tolerance)
+                parts.append((name, vorocrust.Surface(*_arrays(points, triangles), name=name)))
+        else:
+            raise vorocrust.UsageError("%s is neither a Mesh nor a Part object" % obj.Label)
+    if not parts:
+        raise vorocrust.UsageError("nothing to mesh: select Mesh objects or Part solids")
+    return parts
+
+
+def model_of(objects, tolerance):
+    """The objects as one vorocrust.Surface (see model_parts)."""
+    return vorocrust.merge_surfaces(model_parts(objects, tolerance))
+
+
+def run(model, parameters, progress=None):
+    """Meshes a vorocrust.Surface: vorocrust.mesh() with the parameters. Touches no FreeCAD
+    object, so it may run in a worker thread while FreeCAD's window goes on."""
+    return vorocrust.mesh(model, progress=progress, **parameters.mesh_options())
+
+
+def cells_of(result):
+    """The volume mesh of a run: its cells, or for a run that stopped after the surface the
+    cells of its surface seeds."""
+    return result.cells if result.cells is not None else vorocrust.compute_cells(result.seeds)
+
+
+def needs_cells(formats):
+    """True when `formats` hold a volume format."""
+    return any(f in vorocrust.VOLUME_FORMATS for f in formats)
+
+
+def write_results(result, folder, formats, cells=None):
+    """Writes the run's files in `formats` into `folder` (the volume formats from `cells`, by
+    default cells_of(result)); returns their paths."""
+    if cells is None and needs_cells(formats):
+        cells = cells_of(result)
+    return vorocrust.write_outputs(result, folder, list(formats), cells=cells)
+
+
+def default_output_dir(doc):
+    """Beside the document's file when it has one, else in the temporary folder."""
+    if doc.FileName:
+        return os.path.join(os.path.dirname(doc.FileName), doc.Name + "_voronoi")
+    return os.path.join(tempfile.gettempdir(), "vorocrust-" + doc.Name)
+
+
+def log_progress():
+    """A progress callback writing each new phase to FreeCAD's report."""
+    last = [None]
+
+    def progress(phase, fraction):
+        stage = phase.split(",")[0]
+        if stage != last[0]:
+            App.Console.PrintLog("VoroCrust: %s\n" % stage)
+            last[0] = stage
+
+    return progress
+
+
+def voronoi_mesh(objects, parameters=None, output_dir=None, formats=DEFAULT_FORMATS, doc=None, progress=None):
+    """Meshes Mesh objects and Part solids and adds the result to their document.
+
+    parameters: a Parameters (defaults when None).
+    output_dir: where the files go (default_output_dir() when None).
+    formats: names from FORMATS.
+    progress: a callable progress(phase, fraction) as vorocrust.mesh() takes; returning False
+        cancels (vorocrust.Cancelled is raised, nothing is written and the document is not
+        changed). None logs the phases to FreeCAD's report.
+
+    Returns the new VoronoiMesh group object. Raises vorocrust.Error (with the library's
+    message) when the model cannot be meshed.
+    """
+    parameters = parameters or Parameters()
+    objects = list(objects)
+    doc = doc or (objects[0].Document if objects else App.ActiveDocument)
+    model = model_of(objects, parameters.tolerance)
+    result = run(model, parameters, progress or log_progress())
+    return add_result(doc, objects, parameters, result, output_dir or default_output_dir(doc), formats)
+
+
+def add_result(doc, objects, parameters, result, output_dir, formats):
+    """Writes a finished run's files and adds its objects to `doc` in one undoable step."""
+    unknown = [f for f in formats if f not in FORMATS]
+    if unknown:
+        raise vorocrust.UsageError("unknown output format %s: expected some of %s" % (
+            ", ".join(map(repr, unknown)), ", ".join(FORMATS)))
+    cells = cells_of(result) if needs_cells(formats) or result.cells is not None else None
+    written = write_results(result, output_dir, formats, cells)
+    doc.openTransaction("Voronoi mesh")
+    try:
+        obj = doc.addObject("App::DocumentObjectGroupPython", "VoronoiMesh")
+        VoronoiMeshResult(obj)
+        obj.Proxy.set_result(obj, objects, parameters, result, cells, output_dir, formats)
+        if App.GuiUp:
+            import VoroCrustGui
+
+            VoroCrustGui.ViewProviderVoronoiMesh(obj.ViewObject)
+        doc.recompute()
+    except Exception:
+        doc.abortTransaction()
+        raise
+    doc.commitTransaction()
+    for path in written:
+        App.Console.PrintMessage("VoroCrust: wrote %s\n" % path)
+    return obj
+
+
+def material_surfaces(surface):
+    """(region number, region name, vertices, triangles) for every material region of a run's
+    output surface: the faces that bound it, turned so their normals point out of it."""
+    regions = surface.regions
+    names = surface.region_names
+    found = []
+    for region in sorted(set(np.unique(regions)) - {0, -1}):
+        back = regions[:, 0] == region
+        front = regions[:, 1] == region
+        triangles = np.concatenate([surface.triangles[back], surface.triangles[front][:, ::-1]])
+        name = names[region] if region < len(names) else "material %d" % region
+        found.append((int(region), name, surface.vertices, triangles))
+    return found
+
+
+def _mesh_of(vertices, triangles):
+    import Mesh
+
+    # Mesh.Mesh((points, facets)) wants Vectors: plain tuples crash FreeCAD 0.20.
+    points = [App.Vector(*map(float, p)) for p in vertices]
+    return Mesh.Mesh((points, [tuple(map(int, t)) for t in triangles]))
+
+
+def _points_of(positions):
+    import Points
+
+    return Points.Points([tuple(map(float, p)) for p in positions])
+
+
+class VoronoiMeshResult:
+    """The document object of a run: its parameters and figures, the output surfaces and seeds
+    as children, and the seeds and surface files kept inside the document, so "Export Voronoi
+    mesh" can write the volume mesh again after the document was saved and reopened."""
+
+    def __init__(self, obj):
+        obj.Proxy = self
+        self._result = None
+        add = obj.addProperty
+        add("App::PropertyLinkList", "Sources", "Input", "The Mesh objects and Part solids meshed")
+        add("App::PropertyFloat", "Tolerance", "Input", "Tessellation tolerance of Part shapes")
+        add("App::PropertyFloat", "Lipschitz", "Parameters", "L: how fast ball radii may vary")
+        add("App::PropertyFloat", "SharpAngle", "Parameters", "Normal deviation (degrees) above which an edge is sharp")
+        add("App::PropertyFloat", "MaxSize", "Parameters", "Largest ball radius and cell size (0: no bound)")
+        add("App::PropertyString", "Interior", "Parameters", "How the volume is seeded: random, lattice or cvt")
+        add("App::PropertyInteger", "CvtIterations", "Parameters", "Lloyd iterations of the cvt interior")
+        add("App::PropertyInteger", "Seed", "Parameters", "Random seed")
+        add("App::PropertyString", "StopAfter", "Parameters", "The last stage run: surface or cells")
+        add("App::PropertyPath", "OutputFolder", "Output", "Where the files were written")
+        add("App::PropertyStringList", "Formats", "Output", "The formats written")
+        add("App::PropertyFileIncluded", "SeedsFile", "Output", "The seeds (seeds.csv), kept in the document")
+        add("App::PropertyFileIncluded", "SurfaceFile", "Output", "The output surface (surface.ply), kept in the document")
+        add("App::PropertyInteger", "SeedCount", "Figures", "Seeds")
+        add("App::PropertyInteger", "SurfaceTriangles", "Figures", "Triangles of the output surface")
+        add("App::PropertyInteger", "CellCount", "Figures", "Cells of the volume mesh")
+        add("App::PropertyFloat", "Volume", "Figures", "Sum of the cell volumes")
+        add("App::PropertyFloat", "QualityMin", "Figures", "Smallest triangle quality Q of the output surface")
+        add("App::PropertyFloat", "HausdorffPercent", "Figures", "Hausdorff distance to the input, % of its diagonal")
+        add("App::PropertyBool", "TopologyMatches", "Figures", "The output surface has the input's topology")
+        for name in ("SeedCount", "SurfaceTriangles", "CellCount", "Volume", "QualityMin", "HausdorffPercent",
+                     "TopologyMatches"):
+            obj.setEditorMode(name, 1)  # read-only
+
+    def set_result(self, obj, objects, parameters, result, cells, output_dir, formats):
+        """Fills the object from a finished run and its volume mesh (None when none was made)
+        and adds its surfaces and seeds as children."""
+        self._result = result
+        doc = obj.Document
+        obj.Sources = list(objects)
+        obj.Tolerance = parameters.tolerance
+        obj.Lipschitz = parameters.lipschitz
+        obj.SharpAngle = parameters.sharp_angle
+        obj.MaxSize = parameters.max_size
+        obj.Interior = parameters.interior
+        obj.CvtIterations = parameters.cvt_iterations
+        obj.Seed = parameters.seed
+        obj.StopAfter = result.stop_after
+        obj.OutputFolder = output_dir
+        obj.Formats = list(formats)
+        staging = tempfile.mkdtemp(prefix="vorocrust-freecad-")
+        try:
+            vorocrust.write_seeds(result.seeds, os.path.join(staging, "seeds.csv"))
+            vorocrust.write_surface(result.surface, os.path.join(staging, "surface.ply"))
+            obj.SeedsFile = os.path.join(staging, "seeds.csv")  # FreeCAD copies it into the document
+            obj.SurfaceFile = os.path.join(staging, "surface.ply")
+        finally:
+            shutil.rmtree(staging, ignore_errors=True)
+        quality = result.surface_quality
+        obj.SeedCount = len(result.seeds)
+        obj.SurfaceTriangles = result.surface.num_faces
+        obj.QualityMin = quality["triangle_quality"]["min"]
+        obj.HausdorffPercent = quality["hausdorff"]["percent_of_bounding_box_diagonal"]
+        obj.TopologyMatches = quality["topology"]["matches"]
+        if cells is not None:
+            obj.CellCount = cells.num_cells
+            obj.Volume = float(cells.volumes.sum())
+
+        for region, name, vertices, triangles in material_surfaces(result.surface):
+            surface = doc.addObject("Mesh::Feature", "VoronoiSurface")
+            surface.Label = "Voronoi surface: %s" % name
+            surface.Mesh = _mesh_of(vertices, triangles)
+            obj.addObject(surface)
+        seeds = doc.addObject("Points::Feature", "VoronoiSeeds")
+        seeds.Label = "Voronoi seeds"
+        seeds.Points = _points_of(result.seeds.positions)
+        obj.addObject(seeds)
+
+    def result(self):
+        """The run's vorocrust.MeshResult while FreeCAD has it in memory (not after reopening)."""
+        return self._result
+
+    def execute(self, obj):
+        pass
+
+    # FreeCAD 0.20 saves proxies with __getstate__, later versions with dumps: the run itself
+    # stays out of the document (its seeds and surface are there as files).
+    def __getstate__(self):
+        return None
+
+    def __setstate__(self, state):
+        self._result = None
+
+    def dumps(self):
+        return None
+
+    def loads(self, state):
+        self._result = None
+
+
+def is_result(obj):
+    """True for the VoronoiMesh objects voronoi_mesh() adds."""
+    return obj is not None and isinstance(getattr(obj, "Proxy", None), VoronoiMeshResult)
+
+
+def export_result(obj, folder, formats):
+    """Writes a VoronoiMesh object's files again into `folder`: from the run when FreeCAD still
+    holds it, else from the seeds and surface kept in the document (the volume formats then
+    from the cells of those seeds, which are the run's cells: the seeds are the whole mesh in
+    compact form). Returns the paths written."""
+    result = obj.Proxy.result()
+    if result is not None:
+        return write_results(result, folder, formats)
+    seeds = vorocrust.read_seeds(obj.SeedsFile)
+    surface = vorocrust.read_mesh(obj.SurfaceFile)
+    unavailable = [f for f in formats if f in ("balls", "svg", "report")]
+    if unavailable:
+        raise vorocrust.UsageError("%s: only the run itself has these; the document keeps its seeds and surface "
+                                   "(run Voronoi mesh again for them)" % ", ".join(unavailable))
+    return vorocrust.write_files(folder, list(formats), seeds=seeds, surface=surface,
+                                 cells=vorocrust.compute_cells(seeds) if needs_cells(formats) else None)

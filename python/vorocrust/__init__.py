@@ -1,0 +1,186 @@
+"""VoroCrust for Python: conforming Voronoi meshing without clipping.
+
+A thin layer over libvorocrust (C++): every figure comes from the library, and arrays are
+NumPy arrays. The usual run::
+
+    import vorocrust
+    result = vorocrust.mesh("model.off", max_size=0.5, seed=7, progress=print)
+    result.surface.vertices, result.surface.triangles, result.surface.regions
+    result.seeds.positions, result.seeds.labels
+    vorocrust.write_outputs(result, "out")          # the files `vorocrust mesh` writes
+
+Models are files (OFF, OBJ, STL, PLY), a Surface, or (vertices, triangles) arrays. Failures
+raise vorocrust.Error subclasses carrying the library's message; a progress callback that
+returns False cancels a run with vorocrust.Cancelled, and nothing is written.
+"""
+
+import math
+import os
+
+from ._vorocrust import (  # noqa: F401  (the public interface)
+    Balls,
+    Cancelled,
+    Cells,
+    Error,
+    InternalError,
+    InvalidGeometryError,
+    MeshResult,
+    NotYetImplementedError,
+    OutputError,
+    Seeds,
+    Surface,
+    UnreadableInputError,
+    DEFAULT_OPTIONS,
+    UsageError,
+    __version__,
+    compute_cells,
+    info,
+    measure_surface_quality,
+    merge_surfaces,
+    read_mesh,
+    read_seeds,
+    validate,
+    write_balls,
+    write_openfoam,
+    write_seeds,
+    write_surface,
+    write_vtu,
+)
+from . import _vorocrust
+
+__all__ = [
+    "Balls", "Cancelled", "Cells", "Error", "InternalError", "InvalidGeometryError", "MeshResult",
+    "NotYetImplementedError", "OutputError", "Seeds", "Surface", "UnreadableInputError", "UsageError",
+    "__version__", "DEFAULT_OPTIONS", "compute_cells", "info", "measure_surface_quality", "merge_surfaces", "mesh",
+    "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_outputs",
+    "write_files", "write_seeds", "write_surface", "write_vtu", "OUTPUT_FORMATS", "VOLUME_FORMATS",
+    "INTERIOR_MODES", "STAGES",
+]
+
+#: What a run can stop after, in pipeline order.
+STAGES = ("balls", "surface", "cells")
+#: How the volume away from the surface is seeded (paper 2.5).
+INTERIOR_MODES = ("random", "lattice", "cvt")
+#: DEFAULT_OPTIONS: the library's default for each option of mesh() (from the extension).
+
+#: What write_outputs() can write, with the files each one makes in the output folder.
+OUTPUT_FORMATS = {
+    "balls": ("balls.csv", "balls.vtk"),
+    "seeds": ("seeds.csv",),
+    "obj": ("surface.obj",),
+    "ply": ("surface.ply",),
+    "svg": ("quality.svg",),
+    "report": ("report.json",),
+    "vtu": ("mesh.vtu",),
+    "openfoam": ("case",),
+}
+
+
+def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_OPTIONS["sharp_angle"],
+         max_size=None, sizing=None, smoothing_iterations=DEFAULT_OPTIONS["smoothing_iterations"],
+         interior=DEFAULT_OPTIONS["interior"], cvt_iterations=DEFAULT_OPTIONS["cvt_iterations"],
+         stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
+         allow_self_intersections=False, progress=None):
+    """Meshes a model: `vorocrust mesh` without the files. Returns a MeshResult.
+
+    model: a file path, a list of paths (merged into one model, one group per file), a
+        Surface, or a (vertices, triangles) pair of arrays (n x 3 numbers, m x 3 indices).
+    lipschitz: L in (0, 1), how fast ball radii may vary (CLI --lipschitz).
+    sharp_angle: normal deviation in degrees (0, 90) above which an edge is a sharp crease
+        (--sharp-angle).
+    max_size: largest ball radius and cell size, None for no bound (--max-size).
+    sizing: a sizing file of lines "x y z size", interpolated (--sizing).
+    smoothing_iterations: rounds of adaptive Loop subdivision inside smooth patches.
+    interior: how the volume is seeded: "random", "lattice" or "cvt" (paper 2.5).
+    cvt_iterations: Lloyd iterations of interior="cvt".
+    stop_after: "balls", "surface" or "cells" (the whole mesh).
+    seed: random seed; equal model, options and seed give equal results.
+    threads: worker threads, 0 for all cores; results do not depend on it.
+    allow_self_intersections: mesh even when input faces intersect each other.
+    progress: a callable progress(phase, fraction) with phase a str and fraction in [0, 1] or
+        None when unknown, called at each new phase and at most every 50 ms within one. Return
+        False (any false value but None) to cancel the run: it raises Cancelled and has
+        written nothing. An exception the callback raises stops the run and propagates.
+
+    The input is validated first, its orientation fixed; a finding of severity "error" raises
+    InvalidGeometryError with its message. The run releases the GIL (other Python threads go
+    on) and answers Ctrl-C. Raises UsageError for options out of range, UnreadableInputError /
+    InvalidGeometryError for bad models (naming file and line), NotYetImplementedError for a
+    stage this version of the library does not have.
+    """
+    return _vorocrust._mesh(
+        model, lipschitz=float(lipschitz), sharp_angle=float(sharp_angle),
+        max_size=None if max_size is None or math.isinf(max_size) else float(max_size), sizing=sizing,
+        smoothing_iterations=int(smoothing_iterations), interior=interior,
+        cvt_iterations=int(cvt_iterations), stop_after=stop_after, seed=int(seed), threads=int(threads),
+        allow_self_intersections=bool(allow_self_intersections), progress=progress)
+
+
+#: The formats written from the cells (the volume mesh), by name in OUTPUT_FORMATS.
+VOLUME_FORMATS = ("vtu", "openfoam")
+
+# The part of a run each format is written from.
+_FORMAT_PARTS = {"balls": "balls", "seeds": "seeds", "obj": "surface", "ply": "surface", "svg": "run",
+                 "report": "run", "vtu": "cells", "openfoam": "cells"}
+
+
+def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=None, cells=None):
+    """Writes the given parts into `folder` (created when missing) under the names
+    `vorocrust mesh` uses: the building block of write_outputs(), for parts that come from
+    elsewhere (seeds read back from a seeds.csv, cells from compute_cells()).
+
+    formats: names from OUTPUT_FORMATS, each needing its part: "balls" balls, "seeds" seeds,
+        "obj" and "ply" surface, "svg" and "report" run (a MeshResult), "vtu" and "openfoam"
+        cells. A format whose part is missing raises UsageError before anything is written.
+
+    Every file is written atomically. Returns the paths written, in the order of `formats`.
+    """
+    parts = {"run": run, "balls": balls, "seeds": seeds, "surface": surface, "cells": cells}
+    formats = list(formats)
+    for name in formats:
+        if name not in OUTPUT_FORMATS:
+            raise UsageError("unknown output format %r: expected one of %s" % (name, ", ".join(OUTPUT_FORMATS)))
+        if parts[_FORMAT_PARTS[name]] is None:
+            stage = " (the run stopped after %s)" % run.stop_after if run is not None else ""
+            raise UsageError("nothing to write as %r: no %s%s" % (name, _FORMAT_PARTS[name], stage))
+    os.makedirs(folder, exist_ok=True)
+    writers = {
+        "balls": lambda: (write_balls(balls, _at(folder, "balls.csv")), write_balls(balls, _at(folder, "balls.vtk"))),
+        "seeds": lambda: write_seeds(seeds, _at(folder, "seeds.csv")),
+        "obj": lambda: write_surface(surface, _at(folder, "surface.obj")),
+        "ply": lambda: write_surface(surface, _at(folder, "surface.ply")),
+        "svg": lambda: run.write_quality_svg(_at(folder, "quality.svg")),
+        "report": lambda: run.write_report(_at(folder, "report.json")),
+        "vtu": lambda: write_vtu(cells, _at(folder, "mesh.vtu")),
+        "openfoam": lambda: write_openfoam(cells, _at(folder, "case")),
+    }
+    written = []
+    for name in formats:
+        writers[name]()
+        written += [_at(folder, f) for f in OUTPUT_FORMATS[name]]
+    return written
+
+
+def write_outputs(result, folder, formats=None, cells=None):
+    """Writes a run's results into `folder` (created when missing), as `vorocrust mesh` does.
+
+    formats: names from OUTPUT_FORMATS ("balls", "seeds", "obj", "ply", "svg", "report",
+        "vtu", "openfoam"); None for every one the run has the parts for. Asking for a part the
+        run did not make (cells after stop_after="surface") raises UsageError and writes
+        nothing.
+    cells: the Cells to write "vtu" and "openfoam" from, instead of result.cells: e.g.
+        compute_cells(result.seeds) for a run that stopped after the surface.
+
+    Every file is written atomically (a temporary file renamed into place). Returns the paths
+    written, in the order of `formats`.
+    """
+    parts = {"run": result, "balls": result.balls, "seeds": result.seeds, "surface": result.surface,
+             "cells": result.cells if cells is None else cells}
+    if formats is None:
+        formats = [name for name in OUTPUT_FORMATS if parts[_FORMAT_PARTS[name]] is not None]
+    return write_files(folder, formats, **parts)
+
+
+def _at(folder, name):
+    return os.path.join(os.fspath(folder), name)
+

@@ -1,0 +1,167 @@
+"""The VoroCrust add-on's App-level function in freecadcmd, without the GUI.
+
+Run by run_freecad_test.py as `freecadcmd freecad_app_test.py` with VOROCRUST_TEST_WORK (a
+fresh folder) and VOROCRUST_TEST_SUMMARY (a JSON file for the driver's own checks) set.
+freecadcmd exits 0 even when a script raises, so every failure ends in sys.exit(1).
+"""
+
+import dataclasses
+import json
+import os
+import sys
+import traceback
+
+# How far the runs go: "cells" meshes the volume with interior seeds; "surface" stops after the
+# surface, the volume files then holding the cells of the surface seeds alone. Both pass.
+STOP_AFTER = "cells"
+# One material per solid once the library meshes several (multi-material input); until then
+# every closed shell bounds the one material "inside".
+EXPECTED_MATERIALS = 1
+
+WORK = os.environ["VOROCRUST_TEST_WORK"]
+SUMMARY = os.environ["VOROCRUST_TEST_SUMMARY"]
+
+
+def count_lines(path):
+    with open(path) as f:
+        return sum(1 for _ in f)
+
+
+def main():
+    import FreeCAD as App
+
+    import VoroCrustMesher
+    import vorocrust
+    from scene import box_and_sphere, check, overlapping_box
+
+    def close(a, b, relative, what):
+        check(abs(a - b) <= relative * abs(b), "%s: %r is not within %g %% of %r" % (what, a, 100 * relative, b))
+
+    summary = {"vorocrust_module": vorocrust.__file__, "mesher_module": VoroCrustMesher.__file__}
+    # The add-on carries its own module, installed beside it.
+    check(os.path.dirname(vorocrust.__file__).startswith(os.path.dirname(VoroCrustMesher.__file__)),
+          "vorocrust is not the add-on's copy: %s" % vorocrust.__file__)
+
+    doc = App.newDocument("VoroCrustApp")
+    box, sphere, input_volume = box_and_sphere(doc)
+    parameters = VoroCrustMesher.Parameters(stop_after=STOP_AFTER, seed=7, max_size=2.0, tolerance=0.05)
+
+    # A cancelled run raises, writes nothing and leaves the document as it was.
+    cancelled_dir = os.path.join(WORK, "cancelled")
+    objects_before = len(doc.Objects)
+    try:
+        VoroCrustMesher.voronoi_mesh([box, sphere], parameters, output_dir=cancelled_dir,
+                                     progress=lambda phase, fraction: phase != "slivers")
+        raise AssertionError("the cancelled run did not raise")
+    except vorocrust.Cancelled as e:
+        summary["cancelled"] = str(e)
+    check(not os.path.exists(cancelled_dir), "the cancelled run wrote %s" % cancelled_dir)
+    check(len(doc.Objects) == objects_before, "the cancelled run changed the document")
+
+    # The run: objects in the document and files on disk.
+    out = os.path.join(WORK, "out")
+    phases = []
+    result = VoroCrustMesher.voronoi_mesh([box, sphere], parameters, output_dir=out,
+                                          formats=["vtu", "openfoam", "seeds", "obj", "ply", "report"],
+                                          progress=lambda phase, fraction: phases.append(phase))
+    check("slivers" in phases, "no progress reports: %s" % phases[:5])
+    check(VoroCrustMesher.is_result(result), "no VoronoiMesh object")
+    check(result.Sources == [box, sphere], "sources %s" % result.Sources)
+    surfaces = [o for o in result.Group if o.isDerivedFrom("Mesh::Feature")]
+    seeds = [o for o in result.Group if o.isDerivedFrom("Points::Feature")]
+    check(len(surfaces) == EXPECTED_MATERIALS, "%d material surfaces" % len(surfaces))
+    check(len(seeds) == 1, "%d seed objects" % len(seeds))
+    check(seeds[0].Points.CountPoints == result.SeedCount, "seed points %d of %d" % (
+        seeds[0].Points.CountPoints, result.SeedCount))
+    surface = surfaces[0].Mesh
+    check(surface.CountFacets == result.SurfaceTriangles, "surface facets")
+    check(surface.isSolid(), "the output surface is not closed")
+    check(surface.countComponents() == 2, "%d surface components, not the box and the sphere" % surface.countComponents())
+    close(surface.Volume, input_volume, 0.02, "volume inside the output surface")
+    check(result.TopologyMatches, "topology differs from the input's")
+    # The volume mesh fills the solids up to the surface's distance from them.
+    close(result.Volume, input_volume, 0.02, "sum of the cell volumes")
+    check(result.CellCount > 0, "no cells")
+
+    check(count_lines(os.path.join(out, "seeds.csv")) == result.SeedCount + 1, "seeds.csv rows")
+    for name in ("mesh.vtu", "surface.obj", "surface.ply", "case/constant/polyMesh/owner", "report.json"):
+        check(os.path.isfile(os.path.join(out, name)), "%s missing" % name)
+    with open(os.path.join(out, "report.json")) as f:
+        report = json.load(f)
+    check(report["status"] == "ok" and report["options"]["seed"] == 7, "report.json: %s" % report["status"])
+    check(report["options"]["stop_after"] == STOP_AFTER, "report.json stage")
+    check(report["input"]["groups"][0]["name"] == "Box" and report["input"]["groups"][1]["name"] == "Sphere",
+          "input groups %s" % report["input"]["groups"])
+
+    # Stopping after the surface: the volume files hold the cells of the surface seeds, one per
+    # seed on the inside of a seed pair, filling the solids as well.
+    surface_only = VoroCrustMesher.voronoi_mesh(
+        [box, sphere], dataclasses.replace(parameters, stop_after="surface"),
+        output_dir=os.path.join(WORK, "surface_only"), formats=["vtu"])
+    check(surface_only.StopAfter == "surface", "stage %s" % surface_only.StopAfter)
+    check(surface_only.CellCount * 2 == surface_only.SeedCount, "cells %d of %d surface seeds" % (
+        surface_only.CellCount, surface_only.SeedCount))
+    check(surface_only.SurfaceTriangles == result.SurfaceTriangles, "the surface differs between the stages")
+    close(surface_only.Volume, input_volume, 0.02, "sum of the surface seeds' cell volumes")
+    check(os.path.isfile(os.path.join(WORK, "surface_only", "mesh.vtu")), "mesh.vtu of the surface stage")
+    surface_only.removeObjectsFromDocument()  # its surfaces and seeds
+    doc.removeObject(surface_only.Name)
+
+    # Export writes the same volume mesh again: from the run in memory, then from the seeds the
+    # saved document keeps.
+    with open(os.path.join(out, "mesh.vtu"), "rb") as f:
+        vtu = f.read()
+    again = os.path.join(WORK, "export_memory")
+    VoroCrustMesher.export_result(result, again, ["vtu", "seeds"])
+    with open(os.path.join(again, "mesh.vtu"), "rb") as f:
+        check(f.read() == vtu, "exported mesh.vtu differs from the run's")
+    saved = os.path.join(WORK, "voronoi.FCStd")
+    name = result.Name
+    summary.update(out=out, cells=result.CellCount, volume=result.Volume, input_volume=input_volume,
+                   seeds=result.SeedCount, triangles=result.SurfaceTriangles, stop_after=STOP_AFTER)
+    doc.saveAs(saved)
+    App.closeDocument(doc.Name)
+    doc = App.openDocument(saved)
+    reopened = doc.getObject(name)
+    check(VoroCrustMesher.is_result(reopened) and reopened.Proxy.result() is None, "reopened result")
+    again = os.path.join(WORK, "export_document")
+    VoroCrustMesher.export_result(reopened, again, ["vtu", "openfoam", "obj"])
+    with open(os.path.join(again, "mesh.vtu"), "rb") as f:
+        check(f.read() == vtu, "mesh.vtu from the saved document's seeds differs from the run's")
+    with open(os.path.join(again, "surface.obj"), "rb") as a, open(os.path.join(out, "surface.obj"), "rb") as b:
+        check(a.read() == b.read(), "surface.obj from the saved document differs")
+    try:
+        VoroCrustMesher.export_result(reopened, again, ["report"])
+        raise AssertionError("exporting a report from a reopened document did not raise")
+    except vorocrust.UsageError as e:
+        summary["export_refused"] = str(e)
+
+    # Bad input: overlapping solids intersect each other; the library's message names the part.
+    other = overlapping_box(doc)
+    first = doc.getObject("Box")
+    try:
+        VoroCrustMesher.voronoi_mesh([first, other], parameters, output_dir=os.path.join(WORK, "bad"))
+        raise AssertionError("intersecting solids did not raise")
+    except vorocrust.InvalidGeometryError as e:
+        summary["invalid"] = str(e)
+        check("intersect" in str(e) and "(Overlap" in str(e), "message: %s" % e)
+    check(not os.path.exists(os.path.join(WORK, "bad")), "the failed run wrote files")
+
+    # Part shapes follow the tolerance: a finer one gives more triangles.
+    cylinder = doc.addObject("Part::Cylinder", "Cylinder")
+    doc.recompute()
+    coarse = VoroCrustMesher.model_parts([cylinder], 0.5)[0][1].num_faces
+    fine = VoroCrustMesher.model_parts([cylinder], 0.01)[0][1].num_faces
+    check(fine > coarse, "tessellation: %d triangles at 0.01, %d at 0.5" % (fine, coarse))
+
+    with open(SUMMARY, "w") as f:
+        json.dump(summary, f, indent=1)
+
+
+try:
+    main()
+except BaseException:
+    traceback.print_exc()
+    sys.stdout.flush()
+    sys.exit(1)
+sys.exit(0)
