@@ -1,0 +1,29 @@
+// A linear program in at most four unknowns: maximise objective . x subject to half-spaces
+// a . x <= b and the box |x_i| <= bound, by Seidel's randomised incremental algorithm. The
+// half-spaces are taken in an order shuffled from a fixed seed, so equal inputs give equal
+// answers; the expected work is linear in their number.
+//
+// Tolerances are absolute, for coefficients and bounds of order one: scale the problem so.
+// When the optimum is not unique, one of the optimal points is returned.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace vorocrust::quality {
+
+inline constexpr int kMaxUnknowns = 4;
+using LpVector = std::array<double, kMaxUnknowns>;
+
+struct HalfSpace {
+  LpVector a{};  // the first `unknowns` entries are used
+  double b = 0;
+};
+
+// The optimal point, or nothing when the half-spaces and the box have no common point.
+// unknowns in 1..4; bound > 0.
+std::optional<LpVector> maximise(int unknowns, const LpVector& objective, std::vector<HalfSpace> constraints,
+                                 double bound);
+
+}  // namespace vorocrust::quality
