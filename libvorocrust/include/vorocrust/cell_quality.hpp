@@ -53,7 +53,7 @@ struct CellShape {
   double volume = 0;        // VoronoiCell::volume
   std::size_t faces = 0;
   double shortest_edge = 0;           // in the mesh's units
-  double shortest_edge_relative = 0;  // shortest_edge / cbrt(volume)
+  double shortest_edge_relative = 0;  // shortest_edge / cbrt(volume); 0 without volume
 };
 
 struct CellQuality {
