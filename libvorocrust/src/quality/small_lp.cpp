@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "quality/fixed_shuffle.hpp"
-
 namespace vorocrust::quality {
 
 namespace {
@@ -59,50 +57,60 @@ HalfSpace restrict_to(const HalfSpace& g, const HalfSpace& h, int j, int d) {
   return r;
 }
 
-std::optional<LpVector> solve(int d, const LpVector& c, const HalfSpace* h, std::size_t n, double bound) {
-  if (d == 1) return solve_line(c, h, n, bound);
-  LpVector x{};
-  for (int l = 0; l < d; ++l) x[l] = c[l] < 0 ? -bound : bound;  // the box's best corner
-  std::vector<HalfSpace> below;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!violated(h[i], x, d)) continue;
-    int j = 0;
-    for (int l = 1; l < d; ++l) {
-      if (std::abs(h[i].a[l]) > std::abs(h[i].a[j])) j = l;
+// One buffer per dimension for the half-spaces restricted to a plane, reused by every violation
+// at that dimension: no allocation once they have grown.
+class Seidel {
+ public:
+  explicit Seidel(double bound) : bound_(bound) {}
+
+  std::optional<LpVector> solve(int d, const LpVector& c, const HalfSpace* h, std::size_t n) {
+    if (d == 1) return solve_line(c, h, n, bound_);
+    LpVector x{};
+    for (int l = 0; l < d; ++l) x[l] = c[l] < 0 ? -bound_ : bound_;  // the box's best corner
+    std::vector<HalfSpace>& below = below_[static_cast<std::size_t>(d)];
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!violated(h[i], x, d)) continue;
+      int j = 0;
+      for (int l = 1; l < d; ++l) {
+        if (std::abs(h[i].a[l]) > std::abs(h[i].a[j])) j = l;
+      }
+      // A plane with no unknown to solve for: 0 <= b violated, so nothing is feasible.
+      if (std::abs(h[i].a[j]) <= kNegligible) return std::nullopt;
+      // The box on the eliminated unknown first, then every half-space before this one.
+      below.clear();
+      for (double side : {1.0, -1.0}) {
+        HalfSpace box;
+        box.a[j] = side;
+        box.b = bound_;
+        below.push_back(restrict_to(box, h[i], j, d));
+      }
+      for (std::size_t k = 0; k < i; ++k) below.push_back(restrict_to(h[k], h[i], j, d));
+      HalfSpace objective;
+      objective.a = c;
+      const LpVector down = restrict_to(objective, h[i], j, d).a;
+      const std::optional<LpVector> y = solve(d - 1, down, below.data(), below.size());
+      if (!y) return std::nullopt;
+      double rest = h[i].b;
+      for (int l = 0, m = 0; l < d; ++l) {
+        if (l == j) continue;
+        x[l] = (*y)[m++];
+        rest -= h[i].a[l] * x[l];
+      }
+      x[j] = rest / h[i].a[j];
     }
-    // A plane with no unknown to solve for: 0 <= b violated, so nothing is feasible.
-    if (std::abs(h[i].a[j]) <= kNegligible) return std::nullopt;
-    // The box on the eliminated unknown first, then every half-space before this one.
-    below.clear();
-    for (double side : {1.0, -1.0}) {
-      HalfSpace box;
-      box.a[j] = side;
-      box.b = bound;
-      below.push_back(restrict_to(box, h[i], j, d));
-    }
-    for (std::size_t k = 0; k < i; ++k) below.push_back(restrict_to(h[k], h[i], j, d));
-    HalfSpace objective;
-    objective.a = c;
-    const LpVector down = restrict_to(objective, h[i], j, d).a;
-    const std::optional<LpVector> y = solve(d - 1, down, below.data(), below.size(), bound);
-    if (!y) return std::nullopt;
-    double rest = h[i].b;
-    for (int l = 0, m = 0; l < d; ++l) {
-      if (l == j) continue;
-      x[l] = (*y)[m++];
-      rest -= h[i].a[l] * x[l];
-    }
-    x[j] = rest / h[i].a[j];
+    return x;
   }
-  return x;
-}
+
+ private:
+  double bound_;
+  std::array<std::vector<HalfSpace>, kMaxUnknowns + 1> below_;
+};
 
 }  // namespace
 
-std::optional<LpVector> maximise(int unknowns, const LpVector& objective, std::vector<HalfSpace> constraints,
+std::optional<LpVector> maximise(int unknowns, const LpVector& objective, const std::vector<HalfSpace>& constraints,
                                  double bound) {
-  fixed_shuffle(constraints);
-  return solve(unknowns, objective, constraints.data(), constraints.size(), bound);
+  return Seidel(bound).solve(unknowns, objective, constraints.data(), constraints.size());
 }
 
 }  // namespace vorocrust::quality

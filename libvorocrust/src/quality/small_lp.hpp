@@ -1,7 +1,8 @@
 // A linear program in at most four unknowns: maximise objective . x subject to half-spaces
-// a . x <= b and the box |x_i| <= bound, by Seidel's randomised incremental algorithm. The
-// half-spaces are taken in an order shuffled from a fixed seed, so equal inputs give equal
-// answers; the expected work is linear in their number.
+// a . x <= b and the box |x_i| <= bound, by Seidel's incremental algorithm over the half-spaces
+// in the order given. Its expected work is linear in their number for a random order
+// (fixed_shuffle.hpp keeps that reproducible); an order that puts the half-spaces likely to
+// bound the optimum first is faster still, as then the later ones seldom move it.
 //
 // Tolerances are absolute, for coefficients and bounds of order one: scale the problem so.
 // When the optimum is not unique, one of the optimal points is returned.
@@ -23,7 +24,7 @@ struct HalfSpace {
 
 // The optimal point, or nothing when the half-spaces and the box have no common point.
 // unknowns in 1..4; bound > 0.
-std::optional<LpVector> maximise(int unknowns, const LpVector& objective, std::vector<HalfSpace> constraints,
+std::optional<LpVector> maximise(int unknowns, const LpVector& objective, const std::vector<HalfSpace>& constraints,
                                  double bound);
 
 }  // namespace vorocrust::quality

@@ -29,8 +29,9 @@ struct Plane {
 // The largest ball inside every plane and inside the ball of radius `extent` about `inside`, a
 // point inside the planes (its role: the scale and centre of the tolerances; the extent only
 // matters for unbounded half-space sets). The linear program of maximising r with
-// normal . c + r <= offset for every plane, solved by Seidel's algorithm (small_lp.hpp); the
-// radius is then the distance from the centre to its nearest plane, so the ball always fits.
+// normal . c + r <= offset for every plane, solved by Seidel's algorithm (small_lp.hpp) over
+// the planes nearest `inside` first; the radius is then the distance from the centre to its
+// nearest plane, so the ball always fits.
 // Radius 0 when the planes leave no interior.
 Sphere largest_inscribed_ball(const std::vector<Plane>& planes, const Point& inside, double extent);
 
