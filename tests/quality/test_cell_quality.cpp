@@ -13,7 +13,10 @@
 #include "cells/seed_sets.hpp"
 #include "quality/brute_force_spheres.hpp"
 #include "vorocrust/cell_quality.hpp"
+#include "test_support.hpp"
 #include "vorocrust/error.hpp"
+#include "vorocrust/mesher.hpp"
+#include "vorocrust/read_mesh.hpp"
 
 namespace vorocrust {
 namespace {
@@ -222,35 +225,60 @@ TEST(CellQuality, InscribedBallFitsEveryFace) {
   }
 }
 
-// Cells of a lattice moved by a thousandth or less: tiny faces and edges next to large ones, points
-// nearly cospherical. Against brute force over the cell's points and over the bisector planes
-// of its seed links (the cell as the Voronoi diagram defines it, not as its polygons give it).
+// Cell c of `mesh` against brute force over its points and over the bisector planes of its seed
+// links (the cell as the Voronoi diagram defines it, not as its polygons give it); the enclosing
+// sphere only up to `max_points` points, brute force being slow.
+void expect_brute_force_spheres(const VoronoiMesh& mesh, const std::vector<Seed>& seeds, const CellQuality& q,
+                                std::size_t c, std::size_t max_points = 64) {
+  const CellShape& s = q.cells[c];
+  std::vector<Point> points;
+  std::vector<quality::Plane> planes;
+  for (Index f : mesh.cells[c].faces) {
+    const VoronoiFace& face = mesh.faces[f];
+    for (Index p : face.points) points.push_back(mesh.points[p]);
+    const Point a = seeds[face.owner_seed].position, b = seeds[face.neighbour_seed].position;
+    const Point outward = (face.owner_seed == mesh.cells[c].seed ? b - a : a - b).normalized();
+    planes.push_back({outward, outward.dot(a + b) / 2});
+  }
+  std::sort(points.begin(), points.end(), [](const Point& x, const Point& y) {
+    return std::tie(x.x(), x.y(), x.z()) < std::tie(y.x(), y.y(), y.z());
+  });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() <= max_points) {
+    EXPECT_NEAR(s.circumradius, quality::brute_force_enclosing_radius(points), 1e-9 * s.circumradius) << "cell " << c;
+  }
+  EXPECT_NEAR(s.inradius, quality::brute_force_inscribed_radius(planes), 1e-9 * s.circumradius) << "cell " << c;
+}
+
+// Cells of a lattice moved by a thousandth or less: tiny faces and edges next to large ones,
+// points nearly cospherical.
 TEST(CellQuality, NearDegenerateCellsAgreeWithBruteForce) {
   for (double jitter : {1e-3, 1e-5}) {
+    SCOPED_TRACE(jitter);
     const auto seeds = test::lattice_seeds(6, jitter, test::ball_region(Point(2.5, 2.5, 2.5), 1.8), 13);
     const VoronoiMesh mesh = compute_cells(seeds);
     ASSERT_GE(mesh.cells.size(), 8u);
     const CellQuality q = measure_cell_quality(mesh);
     for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
-      const CellShape& s = q.cells[c];
-      std::vector<Point> points;
-      std::vector<quality::Plane> planes;
-      for (Index f : mesh.cells[c].faces) {
-        const VoronoiFace& face = mesh.faces[f];
-        for (Index p : face.points) points.push_back(mesh.points[p]);
-        const Point a = seeds[face.owner_seed].position, b = seeds[face.neighbour_seed].position;
-        const Point outward = (face.owner_seed == mesh.cells[c].seed ? b - a : a - b).normalized();
-        planes.push_back({outward, outward.dot(a + b) / 2});
-      }
-      std::sort(points.begin(), points.end(), [](const Point& x, const Point& y) {
-        return std::tie(x.x(), x.y(), x.z()) < std::tie(y.x(), y.y(), y.z());
-      });
-      points.erase(std::unique(points.begin(), points.end()), points.end());
-      EXPECT_NEAR(s.circumradius, quality::brute_force_enclosing_radius(points), 1e-9) << jitter << " cell " << c;
-      EXPECT_NEAR(s.inradius, quality::brute_force_inscribed_radius(planes), 1e-8) << jitter << " cell " << c;
-      EXPECT_NEAR(s.aspect_ratio, std::sqrt(3.0), 0.01) << jitter << " cell " << c;
+      expect_brute_force_spheres(mesh, seeds, q, c);
+      EXPECT_NEAR(q.cells[c].aspect_ratio, std::sqrt(3.0), 0.01) << "cell " << c;
     }
   }
+}
+
+// The cells of a real VoroCrust seed set, the surface seeds of cgal_joint.off: many seeds on one
+// sphere about every ball centre, long thin cells across the surface.
+TEST(CellQuality, SurfaceSeedCellsAgreeWithBruteForce) {
+  MeshOptions options;
+  options.stop_after = Stage::Surface;
+  const MeshResult r = generate_mesh(read_mesh(test::model("cgal_joint.off")), options);
+  const VoronoiMesh mesh = compute_cells(r.seeds);
+  const CellQuality q = measure_cell_quality(mesh);
+  ASSERT_GT(mesh.cells.size(), 5000u);
+  for (std::size_t c = 0; c < mesh.cells.size(); c += 37) expect_brute_force_spheres(mesh, r.seeds, q, c, 30);
+  EXPECT_TRUE(std::isfinite(q.max_aspect_ratio));
+  EXPECT_GT(q.max_aspect_ratio, q.mean_aspect_ratio);
+  EXPECT_GT(q.mean_aspect_ratio, q.min_aspect_ratio);
 }
 
 TEST(CellQuality, SameFiguresForOneAndTwoThreads) {
