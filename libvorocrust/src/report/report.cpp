@@ -245,16 +245,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                        {"spoke_seeds", i.spoke_seeds},       {"lattice_seeds", i.lattice_seeds},
                        {"lipschitz_shrinks", i.lipschitz_shrinks}, {"rounds", i.rounds},
                        {"cvt_iterations", i.cvt_iterations}, {"cvt_last_move", i.cvt_last_move}};
-    std::size_t interior_faces = 0;
-    double volume = 0;
-    for (const VoronoiFace& f : m.cells.faces) interior_faces += f.neighbour != kNoCell;
-    for (const VoronoiCell& c : m.cells.cells) volume += c.volume;
-    doc["cells"] = {{"cells", m.cells.cells.size()},
-                    {"faces", m.cells.faces.size()},
-                    {"interior_faces", interior_faces},
-                    {"boundary_faces", m.cells.faces.size() - interior_faces},
-                    {"points", m.cells.points.size()},
-                    {"volume", volume}};
+    doc["cells"] = cells_object(m.cells, nullptr);
   }
   if (report.mesh && report.input && report.validation) {
     doc["input"] = info_object(report.inputs, *report.mesh, *report.input, *report.validation);
