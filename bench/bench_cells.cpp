@@ -1,7 +1,8 @@
 // The cells stage: compute_cells on a jittered cubic lattice of 48^3 = 110 592 seeds whose outer
 // layer is outside (97 336 cells), on 1 and 2 threads, against Voro++'s own single-thread rate
 // for the same full cells (vertices, faces and neighbours extracted) from one container of all
-// the seeds, and the raw slab computation alone. Results go to bench/RESULTS.md.
+// the seeds, and the raw slab computation alone; then measure_cell_quality on those cells.
+// Results go to bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 
 #include <tbb/task_arena.h>
@@ -11,6 +12,7 @@
 
 #include "cells/seed_sets.hpp"
 #include "cells/voronoi_cells.hpp"
+#include "vorocrust/cell_quality.hpp"
 #include "vorocrust/cells.hpp"
 
 namespace {
@@ -93,11 +95,25 @@ void voropp_full_cells(benchmark::State& state) {
   state.counters["cells/s"] = benchmark::Counter(static_cast<double>(cells), benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// The volume quality of the cells above: per cell the smallest enclosing sphere and the largest
+// inscribed ball, then the figures over all cells.
+void measure_cell_quality(benchmark::State& state) {
+  static const vorocrust::VoronoiMesh mesh = vorocrust::compute_cells(seeds());
+  vorocrust::CellQualityOptions options;
+  options.threads = static_cast<int>(state.range(0));
+  double worst = 0;
+  for (auto _ : state) worst = vorocrust::measure_cell_quality(mesh, options).max_aspect_ratio;
+  state.counters["max aspect ratio"] = worst;
+  state.counters["cells/s"] =
+      benchmark::Counter(static_cast<double>(mesh.cells.size()), benchmark::Counter::kIsIterationInvariantRate);
+}
+
 }  // namespace
 
 BENCHMARK(voropp_full_cells)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(raw_slab_cells)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
 BENCHMARK(compute_cells)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
+BENCHMARK(measure_cell_quality)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->Iterations(3)->UseRealTime();
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "exit_codes.hpp"
 #include "vorocrust/vorocrust.hpp"
@@ -12,14 +14,27 @@ namespace vorocrust::cli {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
 int run_cells(const CellsArgs& args) {
-  const auto start = std::chrono::steady_clock::now();
+  auto start = std::chrono::steady_clock::now();
   const std::vector<Seed> seeds = read_seeds_csv(args.seeds_file);
   CellsOptions options;
   options.materials = args.materials;
   options.threads = args.threads;
   const VoronoiMesh mesh = compute_cells(seeds, options);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double cells_seconds = seconds_since(start);
+  start = std::chrono::steady_clock::now();
+  CellQualityOptions quality_options;
+  quality_options.threads = args.threads;
+  const CellQuality quality = measure_cell_quality(mesh, quality_options);
+  const double quality_seconds = seconds_since(start);
 
   std::error_code ec;
   fs::create_directories(args.output_dir, ec);
@@ -31,16 +46,37 @@ int run_cells(const CellsArgs& args) {
   const auto wants = [&](const char* format) {
     return std::find(args.formats.begin(), args.formats.end(), format) != args.formats.end();
   };
+  // The seeds go along (unless they are read from there), so that the folder holds the mesh in
+  // its compact form and `vorocrust quality OUTDIR` finds them.
+  std::error_code same_ec;
+  if (!fs::equivalent(args.seeds_file, out / "seeds.csv", same_ec)) write_seeds_csv(seeds, out / "seeds.csv");
   if (wants("vtu")) write_vtu(mesh, out / "mesh.vtu");
   if (wants("openfoam")) write_openfoam_case(mesh, out / "case");
+  write_histogram_svg(out / "quality.svg", "cell quality: " + args.seeds_file, {cell_quality_panel(quality)});
+  CellsReport report;
+  report.command = args.command_line;
+  report.seeds_file = args.seeds_file;
+  report.seeds = seeds.size();
+  report.mesh = &mesh;
+  report.quality = &quality;
+  report.timings = {{"cells", cells_seconds}, {"cell quality", quality_seconds}};
+  if (std::ifstream previous(out / "report.json", std::ios::binary); previous) {
+    report.previous.assign(std::istreambuf_iterator<char>(previous), std::istreambuf_iterator<char>());
+  }
+  write_file_atomically(out / "report.json", cells_report_json(report) + "\n");
 
   if (!args.quiet) {
     const std::size_t interior = count_interior_faces(mesh);
     std::printf("%zu seeds: %zu cells, %zu faces (%zu interior, %zu boundary), %zu points, volume %.10g, in %.3f s\n",
                 seeds.size(), mesh.cells.size(), mesh.faces.size(), interior, mesh.faces.size() - interior,
-                mesh.points.size(), total_volume(mesh), seconds);
+                mesh.points.size(), quality.total_volume, cells_seconds);
+    std::printf("aspect ratio %.4g min, %.4g mean, %.4g max (cell %zu, seed %u); %zu cells above %.4g; in %.3f s\n",
+                quality.min_aspect_ratio, quality.mean_aspect_ratio, quality.max_aspect_ratio, quality.worst_cell,
+                quality.worst_seed, quality.aspect_ratio_above_high, quality.histogram_high, quality_seconds);
     if (wants("vtu")) std::printf("wrote %s\n", (out / "mesh.vtu").c_str());
     if (wants("openfoam")) std::printf("wrote %s/ (check it with: checkMesh -case %s)\n", (out / "case").c_str(), (out / "case").c_str());
+    std::printf("wrote %s, %s and %s\n", (out / "seeds.csv").c_str(), (out / "report.json").c_str(),
+                (out / "quality.svg").c_str());
   }
   return kOk;
 }

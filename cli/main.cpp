@@ -104,7 +104,8 @@ int main(int argc, char** argv) {
   QualityArgs quality;
   CLI::App* quality_cmd = app.add_subcommand(
       "quality", "Measure a run's output surface (OUTDIR/surface.ply) against its input: angles, triangle quality, "
-                 "Hausdorff distance, topology; draws OUTDIR/quality.svg");
+                 "Hausdorff distance, topology; and the cells of its seeds (OUTDIR/seeds.csv): aspect ratio, volume, "
+                 "faces, shortest edge; draws OUTDIR/quality.svg");
   quality_cmd->add_option("OUTDIR", quality.output_dir, "Output folder of `vorocrust mesh`")->required();
   quality_cmd->add_option("--input", quality.inputs,
                           "Input meshes to compare with (default: the inputs named in OUTDIR/report.json)");
@@ -115,8 +116,10 @@ int main(int argc, char** argv) {
   quality_cmd->add_flag("--json", quality.json, "Print one JSON object instead of text");
 
   CellsArgs cells;
+  cells.command_line.assign(argv, argv + argc);
   CLI::App* cells_cmd = app.add_subcommand(
-      "cells", "Build the conforming Voronoi mesh of a seed set (a run's seeds.csv): mesh.vtu and an OpenFOAM case");
+      "cells", "Build the conforming Voronoi mesh of a seed set (a run's seeds.csv): mesh.vtu and an OpenFOAM case, "
+               "its cell quality in report.json and quality.svg");
   cells_cmd->add_option("SEEDS", cells.seeds_file, "Seeds as written by `vorocrust mesh`: x,y,z,label,radius,kind")
       ->required();
   cells_cmd->add_option("-o,--output", cells.output_dir, "Output folder (created if missing)")->required();

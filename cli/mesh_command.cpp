@@ -100,8 +100,9 @@ int run_mesh(const MeshArgs& args) {
       std::filesystem::remove_all(out / "case", ignored);
     }
     write_or_remove(surface, "quality.svg", [&](const auto& path) {
-      write_histogram_svg(path, "surface quality: " + (out / "surface.ply").string(),
-                          {surface_quality_panel(*result->surface_quality)});
+      std::vector<HistogramPanel> panels = {surface_quality_panel(*result->surface_quality)};
+      if (result->cell_quality) panels.push_back(cell_quality_panel(*result->cell_quality));
+      write_histogram_svg(path, "quality: " + (out / "surface.ply").string(), panels);
     });
     progress.finish();
     if (!args.quiet) {
@@ -127,6 +128,9 @@ int run_mesh(const MeshArgs& args) {
                    "cells), volume %.10g\n", i.interior_seeds, i.outside_seeds, args.interior.c_str(),
                    result->cells.cells.size(), result->cells.faces.size(), count_interior_faces(result->cells),
                    total_volume(result->cells));
+      const CellQuality& q = *result->cell_quality;
+      std::fprintf(stderr, "vorocrust: cell aspect ratio %.3g mean, %.3g max (seed %u); %zu cells above %.3g\n",
+                   q.mean_aspect_ratio, q.max_aspect_ratio, q.worst_seed, q.aspect_ratio_above_high, q.histogram_high);
       if (wants("vtu")) std::fprintf(stderr, "vorocrust: wrote %s (open it in ParaView)\n", (out / "mesh.vtu").c_str());
       if (wants("openfoam")) {
         std::fprintf(stderr, "vorocrust: wrote %s/ (check it with: checkMesh -case %s)\n", (out / "case").c_str(),

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "exit_codes.hpp"
@@ -52,8 +53,7 @@ std::string describe(const SurfaceTopology& t) {
   return text;
 }
 
-void print_table(const SurfaceQuality& q, const fs::path& surface, const std::vector<fs::path>& inputs,
-                 const fs::path& svg) {
+void print_surface_table(const SurfaceQuality& q, const fs::path& surface, const std::vector<fs::path>& inputs) {
   std::printf("output surface      %s (%zu triangles)\ninput               ", surface.c_str(), q.triangles);
   for (std::size_t i = 0; i < inputs.size(); ++i) std::printf("%s%s", i ? ", " : "", inputs[i].c_str());
   std::printf("\nangles              min %.2f deg, max %.2f deg; %.2f%% below 30 deg, %.2f%% above 90 deg\n",
@@ -68,7 +68,29 @@ void print_table(const SurfaceQuality& q, const fs::path& surface, const std::ve
     std::printf("topology            DIFFERS\n  input             %s\n  output            %s\n",
                 describe(q.input_topology).c_str(), describe(q.output_topology).c_str());
   }
-  std::printf("histogram           %s\n", svg.c_str());
+}
+
+void print_cell_table(const CellQuality& q, const fs::path& seeds, std::size_t seed_count) {
+  std::printf("cells               %zu, of the %zu seeds in %s\n", q.cells.size(), seed_count, seeds.c_str());
+  std::printf("aspect ratio        min %.4g, mean %.4g, max %.4g (cell %zu, seed %u); %zu above %.4g\n",
+              q.min_aspect_ratio, q.mean_aspect_ratio, q.max_aspect_ratio, q.worst_cell, q.worst_seed,
+              q.aspect_ratio_above_high, q.histogram_high);
+  std::printf("cell volume         min %.4g, max %.4g, total %.10g\n", q.min_volume, q.max_volume, q.total_volume);
+  std::printf("faces per cell      min %zu, mean %.2f, max %zu\n", q.min_faces, q.mean_faces, q.max_faces);
+  std::printf("shortest edge       min %.4g, mean %.4g of the cube root of the cell volume (cell %zu)\n",
+              q.min_shortest_edge_relative, q.mean_shortest_edge_relative, q.shortest_edge_cell);
+}
+
+// The cells of OUTDIR/seeds.csv, rebuilt (compute_cells is deterministic, so they are the cells the
+// run made), and their quality. Errors name the seeds file.
+std::optional<CellQuality> measure_cells(const fs::path& seeds_file, std::size_t& seed_count) {
+  const std::vector<Seed> seeds = read_seeds_csv(seeds_file);
+  seed_count = seeds.size();
+  try {
+    return measure_cell_quality(compute_cells(seeds));
+  } catch (const Error& e) {
+    throw Error(e.kind(), "its cells cannot be measured: " + e.message(), {.file = seeds_file.string()});
+  }
 }
 
 }  // namespace
@@ -79,25 +101,44 @@ int run_quality(const QualityArgs& args) {
   if (!fs::is_directory(out)) {
     throw Error(Error::Kind::UnreadableInput, "no such output folder", {.file = out.string()});
   }
-  const fs::path surface = out / "surface.ply";
-  if (!fs::exists(surface)) {
+  const fs::path surface = out / "surface.ply", seeds = out / "seeds.csv";
+  const bool has_surface = fs::exists(surface), has_seeds = fs::exists(seeds);
+  if (!has_surface && !has_seeds) {
     throw Error(Error::Kind::UnreadableInput,
-                "missing: `vorocrust mesh INPUT -o " + out.string() + "` writes the output surface there",
+                "missing, and so is seeds.csv: `vorocrust mesh INPUT -o " + out.string() +
+                    "` writes the output surface and the seeds there",
                 {.file = surface.string()});
   }
-  const std::vector<fs::path> inputs = input_paths(args, out);
-  const SurfaceMesh input = read_meshes(inputs);
-  const SurfaceMesh output = read_mesh(surface);
-  const SurfaceQuality q = measure_surface_quality(input, output, args.options);
+  std::optional<SurfaceQuality> surface_quality;
+  std::vector<fs::path> inputs;
+  if (has_surface) {
+    inputs = input_paths(args, out);
+    const SurfaceMesh input = read_meshes(inputs);
+    const SurfaceMesh output = read_mesh(surface);
+    surface_quality = measure_surface_quality(input, output, args.options);
+  }
+  std::optional<CellQuality> cell_quality;
+  std::size_t seed_count = 0;
+  if (has_seeds) cell_quality = measure_cells(seeds, seed_count);
 
   const fs::path svg = out / "quality.svg";
-  write_histogram_svg(svg, "surface quality: " + surface.string(), {surface_quality_panel(q)});
+  std::vector<HistogramPanel> panels;
+  if (surface_quality) panels.push_back(surface_quality_panel(*surface_quality));
+  if (cell_quality) panels.push_back(cell_quality_panel(*cell_quality));
+  const std::string title = !cell_quality      ? "surface quality: " + surface.string()
+                            : !surface_quality ? "cell quality: " + seeds.string()
+                                               : "surface and cell quality: " + out.string();
+  write_histogram_svg(svg, title, panels);
 
   if (args.json) {
-    std::printf("%s\n", surface_quality_json(q).c_str());
-  } else {
-    print_table(q, surface, inputs, svg);
+    std::printf("%s\n", quality_json(surface_quality ? &*surface_quality : nullptr,
+                                     cell_quality ? &*cell_quality : nullptr)
+                             .c_str());
+    return kOk;
   }
+  if (surface_quality) print_surface_table(*surface_quality, surface, inputs);
+  if (cell_quality) print_cell_table(*cell_quality, seeds, seed_count);
+  std::printf("histogram%s          %s\n", panels.size() > 1 ? "s" : " ", svg.c_str());
   return kOk;
 }
 

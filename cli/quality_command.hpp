@@ -1,7 +1,11 @@
-// `vorocrust quality`: the surface-quality figures (paper section 3) of a mesh run's output
-// surface, OUTDIR/surface.ply, against the input it was made from: a short table (or JSON) on
-// standard output and the triangle-quality histogram in OUTDIR/quality.svg. Returns an exit code
-// (exit_codes.hpp); a missing or unreadable file is an Error naming it.
+// `vorocrust quality OUTDIR`: the quality figures of a mesh run (paper section 3). The surface
+// figures of its output surface, OUTDIR/surface.ply, against the input it was made from; the
+// volume figures (cell_quality.hpp) of the cells of its seeds, OUTDIR/seeds.csv, rebuilt with
+// compute_cells, which gives the run's own cells again (it is deterministic) without a mesh file
+// to read back. Each part is measured when its file is there, at least one of them. Prints a
+// short table (or JSON: quality_json) on standard output and draws the triangle-quality and
+// aspect-ratio histograms in OUTDIR/quality.svg. Returns an exit code (exit_codes.hpp); a
+// missing or unreadable file is an Error naming it.
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,6 @@
-// Synthetic seed sets for the cells and export tests and the benchmark: cubic lattices of unit
-// spacing, jittered or not, labelled by a function of position.
+// Synthetic seed sets for the cells, export and quality tests and the benchmarks: cubic lattices
+// of unit spacing, jittered or not, and the body- and face-centred cubic lattices, labelled by a
+// function of position.
 #pragma once
 
 #include <cstdint>
@@ -33,6 +34,38 @@ inline std::vector<Seed> lattice_seeds(int n, double jitter, const std::function
     }
   }
   return seeds;
+}
+
+// The points of the unit cubic lattice 0..n-1 with the cell offsets `basis` added: the
+// body-centred (BCC) lattice with the offsets {0, (1/2, 1/2, 1/2)}, the face-centred (FCC) one
+// with {0, (1/2, 1/2, 0), (1/2, 0, 1/2), (0, 1/2, 1/2)}. Labelled region(position), unjittered.
+inline std::vector<Seed> centred_lattice_seeds(int n, const std::vector<Point>& basis,
+                                               const std::function<std::int32_t(const Point&)>& region) {
+  std::vector<Seed> seeds;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      for (int k = 0; k < n; ++k) {
+        for (const Point& offset : basis) {
+          Seed s;
+          s.position = Point(i, j, k) + offset;
+          s.region = region(s.position);
+          s.kind = s.region == kOutsideRegion ? SeedKind::Outside : SeedKind::Interior;
+          s.radius = 0.5;
+          seeds.push_back(s);
+        }
+      }
+    }
+  }
+  return seeds;
+}
+
+inline std::vector<Seed> bcc_seeds(int n, const std::function<std::int32_t(const Point&)>& region) {
+  return centred_lattice_seeds(n, {Point::Zero(), Point(0.5, 0.5, 0.5)}, region);
+}
+
+inline std::vector<Seed> fcc_seeds(int n, const std::function<std::int32_t(const Point&)>& region) {
+  return centred_lattice_seeds(n, {Point::Zero(), Point(0.5, 0.5, 0), Point(0.5, 0, 0.5), Point(0, 0.5, 0.5)},
+                               region);
 }
 
 // Material 1 inside the ball of radius r about c, outside elsewhere.

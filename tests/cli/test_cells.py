@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """`vorocrust cells` checked by the real tools: VTK's own reader (python3-vtk9) on mesh.vtu and
-OpenFOAM's checkMesh on case/; rebuilding from a run's seeds.csv; bad seed files.
+OpenFOAM's checkMesh on case/; rebuilding from a run's seeds.csv; the cell quality in report.json
+and quality.svg; bad seed files.
 
 Run by CTest as: /usr/bin/python3 test_cells.py VOROCRUST_BINARY MODELS_DIR
 """
+import json
+import math
 import os
 import random
 import re
@@ -12,6 +15,7 @@ import subprocess
 import sys
 import tempfile
 import unittest
+import xml.etree.ElementTree as ElementTree
 
 import vtk
 
@@ -175,6 +179,62 @@ class Cells(unittest.TestCase):
         total = sum(cell_array(grid, "volume"))
         self.assertAlmostEqual(vtk_boundary_volume(grid), total, delta=1e-9 * total)
 
+    def test_report_and_picture_hold_the_cell_quality(self):
+        # Unjittered: every cell a unit cube, aspect ratio sqrt(3), six faces, relative edge 1.
+        labels = lattice_seeds(self.path("seeds.csv"), 8, 0, in_ball(3.5, 2.9), 1)
+        summary = self.cells(self.path("seeds.csv"), self.path("out"), "--format", "vtu").stdout
+        cells = sum(1 for lab in labels if lab)
+        self.assertRegex(summary, r"\naspect ratio 1\.732 min, 1\.732 mean, 1\.732 max \(cell \d+, seed \d+\); "
+                                  r"0 cells above 5; in ")
+        with open(self.path("out", "report.json")) as f:
+            doc = json.load(f)
+        self.assertEqual(doc["status"], "ok")
+        self.assertEqual(doc["seeds"], len(labels))
+        self.assertEqual(doc["seeds_file"], self.path("seeds.csv"))
+        self.assertEqual(doc["command"][1:3], ["cells", self.path("seeds.csv")])
+        self.assertEqual(doc["cells"]["cells"], cells)
+        q = doc["cells"]["quality"]
+        self.assertEqual(q["cells"], cells)
+        for key in ("min", "mean", "max"):
+            self.assertAlmostEqual(q["aspect_ratio"][key], math.sqrt(3), delta=1e-9)
+        histogram = q["aspect_ratio"]["histogram"]
+        self.assertEqual((histogram["low"], histogram["high"], histogram["above_high"]), (1, 5, 0))
+        self.assertEqual(histogram["counts"][2], cells)  # [1.5, 1.75)
+        self.assertEqual(sum(histogram["counts"]), cells)
+        self.assertEqual((q["faces"]["min"], q["faces"]["max"]), (6, 6))
+        self.assertAlmostEqual(q["shortest_edge"]["min"], 1, delta=1e-9)
+        self.assertAlmostEqual(q["volume"]["total"], cells, delta=1e-8)
+        # The same volumes VTK finds in mesh.vtu.
+        self.assertAlmostEqual(sum(vtk_cell_volumes(read_vtu(self.path("out", "mesh.vtu")))), q["volume"]["total"],
+                               delta=1e-9 * cells)
+        svg = ElementTree.parse(self.path("out", "quality.svg")).getroot()
+        texts = [e.text for e in svg.iter("{http://www.w3.org/2000/svg}text")]
+        self.assertIn("cell aspect ratio R / r (circumradius over inradius)", texts)
+        self.assertIn("%d in 16 bins, 0 above 5" % cells, texts)
+        self.assertIn(str(cells), texts)  # the count above the one bar
+        # The seeds go along, unchanged.
+        with open(self.path("seeds.csv")) as a, open(self.path("out", "seeds.csv")) as b:
+            self.assertEqual(a.read(), b.read())
+
+    def test_rebuilding_in_a_runs_folder_keeps_its_report(self):
+        r = run("mesh", os.path.join(MODELS, "cgal_joint.off"), "-o", self.path("run"), "--stop-after", "surface", "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(self.path("run", "report.json")) as f:
+            before = json.load(f)
+        self.cells(self.path("run", "seeds.csv"), self.path("run"), "-q")
+        with open(self.path("run", "report.json")) as f:
+            after = json.load(f)
+        cells = after.pop("cells")
+        before.pop("cells", None)
+        self.assertEqual(after, before)  # the run's inputs, options and figures stay
+        self.assertEqual(cells["seeds_file"], self.path("run", "seeds.csv"))
+        self.assertGreater(cells["quality"]["aspect_ratio"]["max"], cells["quality"]["aspect_ratio"]["min"])
+        # And `quality` still finds the model, and measures both.
+        r = run("quality", self.path("run"), "--samples", "1000")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("Hausdorff distance", r.stdout)
+        self.assertRegex(r.stdout, r"\ncells\s+%d, of the " % cells["cells"])
+
     def test_bad_seed_files(self):
         bad = self.path("bad.csv")
         with open(bad, "w") as f:
@@ -219,6 +279,7 @@ class MeshRuns(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.dir = tempfile.mkdtemp(prefix="vorocrust-mesh-")
+        cls.reports = {}
 
     @classmethod
     def tearDownClass(cls):
@@ -258,6 +319,17 @@ class MeshRuns(unittest.TestCase):
         self.assertEqual(run("cells", os.path.join(out, "seeds.csv"), "-o", again, "-q").returncode, 0)
         with open(os.path.join(out, "mesh.vtu"), "rb") as a, open(os.path.join(again, "mesh.vtu"), "rb") as b:
             self.assertTrue(a.read() == b.read(), "rebuilt mesh.vtu differs")
+        # The run's report measures every cell (paper section 3): its figures are the cells'.
+        with open(os.path.join(out, "report.json")) as f:
+            quality = json.load(f)["cells"]["quality"]
+        self.assertEqual(quality["cells"], material)
+        ratio = quality["aspect_ratio"]
+        self.assertLessEqual(1.0, ratio["min"])
+        self.assertLessEqual(ratio["min"], ratio["mean"])
+        self.assertLessEqual(ratio["mean"], ratio["max"])
+        self.assertEqual(sum(ratio["histogram"]["counts"]) + ratio["histogram"]["above_high"], material)
+        self.assertAlmostEqual(quality["volume"]["total"], enclosed, delta=1e-9 * enclosed)
+        self.reports[mode] = quality
         print("\n  %s --interior %s: %d cells, volume %.9g (surface encloses %.9g), checkMesh non-orthogonality "
               "max %.3g deg, average %.3g deg, %s" % (model, mode, material, vtk_total, enclosed, angles[0], angles[1],
                                                      "Mesh OK" if "\nMesh OK." in r.stdout else "skewness or other warning"))
@@ -275,6 +347,12 @@ class MeshRuns(unittest.TestCase):
 
     def test_cvt(self):
         self.check_run("cgal_fandisk.off", "cvt", "--cvt-iterations", "5")
+        # Lloyd iterations make the interior cells rounder than the random seeds they start from.
+        if "random" not in self.reports:
+            self.check_run("cgal_fandisk.off", "random")
+        cvt, random = (self.reports[m]["aspect_ratio"]["mean"] for m in ("cvt", "random"))
+        print("\n  mean aspect ratio: random %.4f, cvt %.4f" % (random, cvt))
+        self.assertLess(cvt, random)
 
 
 if __name__ == "__main__":

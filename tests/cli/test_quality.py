@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""`vorocrust quality OUTDIR` as a user meets it: the table, the JSON, quality.svg, the failures.
+"""`vorocrust quality OUTDIR` as a user meets it: the table, the JSON, quality.svg, the failures;
+the surface figures from OUTDIR/surface.ply, the cell figures from the cells of OUTDIR/seeds.csv.
 
 Run by CTest as: python3 test_quality.py VOROCRUST_BINARY MODELS_DIR
 """
 import json
+import math
 import os
 import re
 import shutil
@@ -45,6 +47,28 @@ def ply_copy(source, target):
             f.write(" ".join(v) + "\n")
         for t in faces:
             f.write("3 " + " ".join(t) + " 1 0\n")
+
+
+def bcc_seeds(path, n):
+    """The body-centred cubic lattice of n^3 unit cubes; material where every coordinate is in
+    [1.25, n - 2.25], so each material cell is a whole truncated octahedron. Returns the cell count."""
+    cells = 0
+    with open(path, "w") as f:
+        f.write("x,y,z,label,radius,kind\n")
+        for i in range(n):
+            for j in range(n):
+                for k in range(n):
+                    for d in (0, 0.5):
+                        p = (i + d, j + d, k + d)
+                        inside = all(1.25 <= c <= n - 2.25 for c in p)
+                        cells += inside
+                        f.write("%g,%g,%g,%d,0.5,%s\n" % (*p, inside, "interior" if inside else "outside"))
+    return cells
+
+
+def svg_texts(path):
+    root = ElementTree.parse(path).getroot()  # well-formed XML
+    return [e.text for e in root.iter("{http://www.w3.org/2000/svg}text")]
 
 
 class Quality(unittest.TestCase):
@@ -101,6 +125,76 @@ class Quality(unittest.TestCase):
         self.assertIn(model("sandia_torus.obj"), r.stdout)
         self.assertNotRegex(r.stdout, r"Hausdorff distance\s+0 ")
 
+    def test_cells_alone_from_seeds_csv(self):
+        # Truncated octahedra: R / r = sqrt(5/3), 14 faces, volume 1/2, edge sqrt(2)/4.
+        cells = bcc_seeds(os.path.join(self.out, "seeds.csv"), 6)
+        r = run("quality", self.out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertNotIn("output surface", r.stdout)
+        self.assertIn("cells               %d, of the %d seeds in %s" % (cells, 2 * 6 ** 3, os.path.join(self.out, "seeds.csv")),
+                      r.stdout)
+        self.assertRegex(r.stdout, r"aspect ratio\s+min 1\.291, mean 1\.291, max 1\.291 \(cell \d+, seed \d+\); 0 above 5")
+        self.assertRegex(r.stdout, r"faces per cell\s+min 14, mean 14\.00, max 14")
+        self.assertIn("total %.10g\n" % (cells / 2), r.stdout)
+        texts = svg_texts(os.path.join(self.out, "quality.svg"))
+        self.assertIn("cell quality: " + os.path.join(self.out, "seeds.csv"), texts)
+        self.assertNotIn("triangle quality Q = 6S / (sqrt(3) h p) of the output surface", texts)
+
+        r = run("quality", self.out, "--json")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        doc = json.loads(r.stdout)
+        self.assertEqual(list(doc), ["cells"])
+        q = doc["cells"]
+        self.assertEqual(q["cells"], cells)
+        self.assertAlmostEqual(q["aspect_ratio"]["max"], math.sqrt(5 / 3), delta=1e-9)
+        self.assertAlmostEqual(q["aspect_ratio"]["min"], math.sqrt(5 / 3), delta=1e-9)
+        self.assertEqual(q["aspect_ratio"]["histogram"]["counts"][1], cells)  # [1.25, 1.5)
+        self.assertAlmostEqual(q["volume"]["total"], cells / 2, delta=1e-9)
+        self.assertAlmostEqual(q["shortest_edge"]["min"], math.sqrt(2) / 4 / 0.5 ** (1 / 3), delta=1e-9)
+
+    def test_surface_and_cells_together(self):
+        # A real run: its surface against the model, the cells of its seeds.
+        r = run("mesh", model("cgal_joint.off"), "-o", self.out, "--stop-after", "surface", "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        r = run("quality", self.out, "--samples", "2000")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("topology            matches", r.stdout)
+        self.assertRegex(r.stdout, r"\ncells\s+\d+, of the \d+ seeds in ")
+        self.assertIn("histograms          " + os.path.join(self.out, "quality.svg"), r.stdout)
+        texts = svg_texts(os.path.join(self.out, "quality.svg"))
+        self.assertIn("surface and cell quality: " + self.out, texts)
+        self.assertIn("triangle quality Q = 6S / (sqrt(3) h p) of the output surface", texts)
+        self.assertIn("cell aspect ratio R / r (circumradius over inradius)", texts)
+        self.assertEqual(sum(1 for t in texts if t.startswith("min ")), 2)
+        self.assertEqual(sum(1 for t in texts if t.startswith("mean ")), 2)
+
+        r = run("quality", self.out, "--samples", "2000", "--json")
+        doc = json.loads(r.stdout)
+        with open(os.path.join(self.out, "seeds.csv")) as f:
+            inside = sum(1 for line in f.readlines()[1:] if line.split(",")[3] == "1")
+        self.assertEqual(doc["cells"]["cells"], inside)
+        # The same figures `vorocrust cells` writes for the same seeds.
+        r = run("cells", os.path.join(self.out, "seeds.csv"), "-o", os.path.join(self.tmp, "cells"), "-q",
+                "--format", "vtu")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(self.tmp, "cells", "report.json")) as f:
+            self.assertEqual(json.load(f)["cells"]["quality"], doc["cells"])
+
+    def test_bad_seeds_name_their_file(self):
+        self.make_run("cgal_joint.off")
+        seeds = os.path.join(self.out, "seeds.csv")
+        with open(seeds, "w") as f:
+            f.write("x,y,z,label,radius,kind\n0,0,0,1,0.5,interior\n")
+        r = run("quality", self.out)
+        self.assertEqual(r.returncode, 4, r.stderr)
+        self.assertEqual(r.stdout, "")
+        self.assertIn(seeds + ": its cells cannot be measured: cell of seed 0 is not bounded by seeds", r.stderr)
+        with open(seeds, "w") as f:
+            f.write("x,y,z,label\n")
+        r = run("quality", self.out)
+        self.assertEqual(r.returncode, 3, r.stderr)
+        self.assertIn(seeds + ":1:", r.stderr)
+
     def test_missing_surface_names_the_file(self):
         with open(os.path.join(self.out, "report.json"), "w") as f:
             json.dump({"inputs": [model("cgal_joint.off")]}, f)
@@ -108,7 +202,7 @@ class Quality(unittest.TestCase):
         self.assertEqual(r.returncode, 3)
         self.assertEqual(r.stdout, "")
         self.assertIn(os.path.join(self.out, "surface.ply"), r.stderr)
-        self.assertIn("missing", r.stderr)
+        self.assertIn("missing, and so is seeds.csv", r.stderr)
         self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.out, "quality.svg")))
 

@@ -152,15 +152,24 @@ TEST(SampleInterior, CvtMovesInteriorSeedsTowardTheirCentroidsAndKeepsTheSurface
     }
   }
   EXPECT_GT(moved, random.interior.interior_seeds / 2);
-  // The CVT energy's proxy: interior seeds' distance from their cells' centroids.
+  // The CVT energy's proxy: the distance of interior seeds from their cells' centroids, over the
+  // seeds free to reach them (a seed bounding a surface seed's cell keeps its depth).
   const auto off_centre = [](const MeshResult& r) {
     double sum = 0;
     for (const VoronoiCell& c : r.cells.cells) {
-      if (r.seeds[c.seed].kind == SeedKind::Interior) sum += (r.seeds[c.seed].position - c.centroid).norm();
+      if (r.seeds[c.seed].kind != SeedKind::Interior) continue;
+      const bool next_to_surface = std::any_of(c.faces.begin(), c.faces.end(), [&](Index f) {
+        const VoronoiFace& face = r.cells.faces[f];
+        return r.seeds[face.owner_seed].kind == SeedKind::Surface || r.seeds[face.neighbour_seed].kind == SeedKind::Surface;
+      });
+      if (!next_to_surface) sum += (r.seeds[c.seed].position - c.centroid).norm();
     }
     return sum;
   };
   EXPECT_LT(off_centre(cvt), 0.75 * off_centre(random));
+  // And what users look for: rounder cells, the surface cells included.
+  ASSERT_TRUE(cvt.cell_quality && random.cell_quality);
+  EXPECT_LT(cvt.cell_quality->mean_aspect_ratio, random.cell_quality->mean_aspect_ratio);
 }
 
 }  // namespace

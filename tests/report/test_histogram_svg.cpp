@@ -1,11 +1,14 @@
 // The histogram picture: what it must show, escaped, stacked and written whole.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <fstream>
 #include <regex>
 #include <sstream>
 
+#include "cells/seed_sets.hpp"
 #include "test_support.hpp"
+#include "vorocrust/cell_quality.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/quality_svg.hpp"
 
@@ -59,6 +62,59 @@ TEST(HistogramSvg, StacksPanelsAndEscapesText) {
   EXPECT_EQ(svg.find("<circumradius"), std::string::npos);
   EXPECT_NE(svg.find("height=\"600.0\""), std::string::npos);  // title and two panels
   EXPECT_NE(svg.find(">11<"), std::string::npos);
+}
+
+TEST(HistogramSvg, OverflowIsOneMoreBarPastTheRange) {
+  HistogramPanel p = quality_panel();
+  p.low = 1;
+  p.high = 5;
+  p.min = 1.3;
+  p.mean = 7;  // beyond the axis: its line at the axis end, its label saying the value
+  p.above_high = 37;
+  const std::string svg = histogram_svg("cells", {p});
+  EXPECT_EQ(occurrences(svg, "fill=\"#4a7fb5\""), 4u);
+  EXPECT_EQ(occurrences(svg, "fill=\"#b5834a\""), 1u);  // the overflow bar
+  EXPECT_NE(svg.find(">37<"), std::string::npos);
+  EXPECT_NE(svg.find(">&gt; 5<"), std::string::npos);
+  EXPECT_NE(svg.find(">6002 in 20 bins, 37 above 5<"), std::string::npos);
+  EXPECT_NE(svg.find(">mean 7<"), std::string::npos);
+  // Twenty-one slots of (720 - 70 - 24) / 21 units: the last bin ends where the overflow begins.
+  const double slot = (720.0 - 70 - 24) / 21;
+  char edge[32];
+  std::snprintf(edge, sizeof edge, "<rect x=\"%.1f\"", 70 + 20 * slot + 1);
+  EXPECT_NE(svg.find(edge), std::string::npos) << edge;
+  // An empty overflow draws no bar but still says there is none above.
+  p.above_high = 0;
+  const std::string none = histogram_svg("cells", {p});
+  EXPECT_EQ(occurrences(none, "fill=\"#b5834a\""), 0u);
+  EXPECT_NE(none.find(">6002 in 20 bins, 0 above 5<"), std::string::npos);
+}
+
+// quality.svg of a run with cells: the surface panel and the aspect-ratio panel, one under the other.
+TEST(HistogramSvg, SurfaceAndCellPanelsTogether) {
+  const auto seeds = test::lattice_seeds(8, 0.3, test::ball_region(Point(3.5, 3.5, 3.5), 2.9), 6);
+  CellQualityOptions options;
+  options.histogram_high = 2;  // so that some jittered cells overflow
+  const CellQuality cells = measure_cell_quality(compute_cells(seeds), options);
+  ASSERT_GT(cells.aspect_ratio_above_high, 0u);
+  const HistogramPanel panel = cell_quality_panel(cells);
+  EXPECT_EQ(panel.counts, cells.aspect_ratio_histogram);
+  EXPECT_EQ(panel.low, 1);
+  EXPECT_EQ(panel.high, 2);
+  EXPECT_EQ(panel.above_high, cells.aspect_ratio_above_high);
+  EXPECT_EQ(panel.min, cells.min_aspect_ratio);
+  EXPECT_EQ(panel.mean, cells.mean_aspect_ratio);
+
+  const std::string svg = histogram_svg("surface and cell quality", {quality_panel(), panel});
+  EXPECT_NE(svg.find(">triangle quality Q<"), std::string::npos);
+  EXPECT_NE(svg.find(">cell aspect ratio R / r (circumradius over inradius)<"), std::string::npos);
+  EXPECT_NE(svg.find("height=\"600.0\""), std::string::npos);
+  const std::size_t binned = cells.cells.size() - cells.aspect_ratio_above_high;
+  EXPECT_NE(svg.find(">" + std::to_string(binned) + " in 16 bins, " + std::to_string(cells.aspect_ratio_above_high) +
+                     " above 2<"),
+            std::string::npos);
+  EXPECT_EQ(occurrences(svg, ">min "), 2u);
+  EXPECT_EQ(occurrences(svg, ">mean "), 2u);
 }
 
 TEST(HistogramSvg, RefusesPanelsWithoutBinsOrRange) {

@@ -1,8 +1,11 @@
-// The surface-quality JSON and reading a run's inputs back from its report.json.
+// The surface- and cell-quality JSON, the cells run's report.json, and reading a run's inputs back
+// from its report.json.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <nlohmann/json.hpp>
 
+#include "cells/seed_sets.hpp"
 #include "test_support.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
@@ -30,6 +33,95 @@ TEST(QualityReport, JsonHoldsThePaperFiguresWithTheirUnits) {
   EXPECT_EQ(doc["topology"]["input"]["euler_characteristic"], nlohmann::json::array({2}));
   EXPECT_EQ(doc["topology"]["output"]["euler_characteristic"], nlohmann::json::array({0}));
   EXPECT_EQ(doc["topology"]["output"]["closed"], nlohmann::json::array({true}));
+}
+
+TEST(QualityReport, CellJsonHoldsTheVolumeFigures) {
+  const auto seeds = test::lattice_seeds(7, 0.3, test::ball_region(Point(3, 3, 3), 2.4), 3);
+  const VoronoiMesh mesh = compute_cells(seeds);
+  const CellQuality q = measure_cell_quality(mesh);
+  const nlohmann::json doc = nlohmann::json::parse(cell_quality_json(q));
+  EXPECT_EQ(doc["cells"], mesh.cells.size());
+  const auto& ratio = doc["aspect_ratio"];
+  EXPECT_EQ(ratio["min"].get<double>(), q.min_aspect_ratio);
+  EXPECT_EQ(ratio["mean"].get<double>(), q.mean_aspect_ratio);
+  EXPECT_EQ(ratio["max"].get<double>(), q.max_aspect_ratio);
+  EXPECT_EQ(ratio["worst_cell"], q.worst_cell);
+  EXPECT_EQ(ratio["worst_seed"], mesh.cells[q.worst_cell].seed);
+  EXPECT_EQ(ratio["histogram"]["low"], 1.0);
+  EXPECT_EQ(ratio["histogram"]["high"], 5.0);
+  EXPECT_EQ(ratio["histogram"]["counts"].get<std::vector<std::size_t>>(), q.aspect_ratio_histogram);
+  EXPECT_EQ(ratio["histogram"]["above_high"], q.aspect_ratio_above_high);
+  EXPECT_NE(ratio["definition"].get<std::string>().find("sqrt(3) for a cube"), std::string::npos);
+  EXPECT_EQ(doc["volume"]["total"].get<double>(), q.total_volume);
+  EXPECT_EQ(doc["faces"]["min"], q.min_faces);
+  EXPECT_EQ(doc["faces"]["max"], q.max_faces);
+  EXPECT_EQ(doc["shortest_edge"]["min"].get<double>(), q.min_shortest_edge_relative);
+
+  // A cell without interior: JSON has no infinity, so null.
+  CellQuality flat = q;
+  flat.max_aspect_ratio = flat.mean_aspect_ratio = std::numeric_limits<double>::infinity();
+  const nlohmann::json flat_doc = nlohmann::json::parse(cell_quality_json(flat));
+  EXPECT_TRUE(flat_doc["aspect_ratio"]["max"].is_null());
+  EXPECT_TRUE(flat_doc["aspect_ratio"]["mean"].is_null());
+  EXPECT_EQ(flat_doc["aspect_ratio"]["min"].get<double>(), q.min_aspect_ratio);
+
+  // quality --json: the cells under "cells", alone or next to the surface figures.
+  const nlohmann::json alone = nlohmann::json::parse(quality_json(nullptr, &q));
+  EXPECT_EQ(alone.size(), 1u);
+  EXPECT_EQ(alone["cells"], doc);
+  const SurfaceMesh joint = read_mesh(test::model("cgal_joint.off"));
+  QualityOptions few;
+  few.random_samples = 100;
+  const SurfaceQuality s = measure_surface_quality(joint, joint, few);
+  nlohmann::json both = nlohmann::json::parse(quality_json(&s, &q));
+  EXPECT_EQ(both["cells"], doc);
+  EXPECT_EQ(both["triangles"], 446);
+  both.erase("cells");
+  EXPECT_EQ(both, nlohmann::json::parse(surface_quality_json(s)));
+}
+
+TEST(QualityReport, CellsRunReportStandsAloneOrJoinsAMeshRunsReport) {
+  const auto seeds = test::lattice_seeds(6, 0.2, test::ball_region(Point(2.5, 2.5, 2.5), 1.9), 4);
+  const VoronoiMesh mesh = compute_cells(seeds);
+  const CellQuality q = measure_cell_quality(mesh);
+  CellsReport report;
+  report.command = {"vorocrust", "cells", "s.csv", "-o", "out"};
+  report.seeds_file = "s.csv";
+  report.seeds = seeds.size();
+  report.mesh = &mesh;
+  report.quality = &q;
+  report.timings = {{"cells", 0.25}, {"cell quality", 0.5}};
+  nlohmann::json doc = nlohmann::json::parse(cells_report_json(report));
+  EXPECT_EQ(doc["status"], "ok");
+  EXPECT_EQ(doc["seeds"], seeds.size());
+  EXPECT_EQ(doc["total_seconds"].get<double>(), 0.75);
+  EXPECT_EQ(doc["cells"]["cells"], mesh.cells.size());
+  std::size_t interior = 0;
+  for (const VoronoiFace& f : mesh.faces) interior += f.neighbour != kNoCell;
+  EXPECT_EQ(doc["cells"]["interior_faces"], interior);
+  EXPECT_EQ(doc["cells"]["boundary_faces"], mesh.faces.size() - interior);
+  EXPECT_EQ(doc["cells"]["quality"], nlohmann::json::parse(cell_quality_json(q)));
+
+  // Over a mesh run's report: everything kept but "cells", which is this run's.
+  report.previous = R"({"status": "ok", "inputs": ["m.off"], "cells": {"cells": 1}, "surface": {"triangles": 9}})";
+  doc = nlohmann::json::parse(cells_report_json(report));
+  EXPECT_EQ(doc["inputs"], nlohmann::json::array({"m.off"}));
+  EXPECT_EQ(doc["surface"]["triangles"], 9);
+  EXPECT_EQ(doc["cells"]["cells"], mesh.cells.size());
+  EXPECT_EQ(doc["cells"]["seeds_file"], "s.csv");
+  EXPECT_EQ(doc["cells"]["command"][1], "cells");
+  EXPECT_FALSE(doc.contains("seeds_file"));
+  const test::TempDir dir("report");
+  write_file_atomically(dir / "report.json", doc.dump());
+  EXPECT_EQ(run_report_inputs(dir / "report.json"), std::vector<std::string>{"m.off"});
+
+  // Over anything else (an earlier cells report, a broken file): a fresh report.
+  for (const char* previous : {R"({"status": "ok", "seeds_file": "old.csv"})", "{\"inputs\": ["}) {
+    report.previous = previous;
+    doc = nlohmann::json::parse(cells_report_json(report));
+    EXPECT_EQ(doc["seeds_file"], "s.csv") << previous;
+    EXPECT_FALSE(doc.contains("inputs")) << previous;
+  }
 }
 
 TEST(QualityReport, InputsComeBackFromReportJson) {

@@ -15,6 +15,7 @@
 #include "vorocrust/balls.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/progress.hpp"
+#include "vorocrust/cell_quality.hpp"
 #include "vorocrust/quality.hpp"
 #include "vorocrust/seeds.hpp"
 #include "vorocrust/surface_mesh.hpp"
@@ -141,6 +142,8 @@ struct MeshResult {
   // and cells the conforming Voronoi mesh of the material seeds.
   InteriorStats interior;
   VoronoiMesh cells;
+  // The cells measured as the paper's section 3 does (aspect ratio, volume, faces, edges).
+  std::optional<CellQuality> cell_quality;
 };
 
 // Runs the pipeline up to options.stop_after. Throws Error: Usage for options out of range,

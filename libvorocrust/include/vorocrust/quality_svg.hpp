@@ -1,15 +1,17 @@
 // vorocrust/quality_svg.hpp — histograms drawn as one standalone SVG picture, as
-// OUTDIR/quality.svg shows the triangle quality (and later the cell aspect ratios).
+// OUTDIR/quality.svg shows the triangle quality of the surface and the aspect ratio of the cells.
 //
 // Panels stack top to bottom under the title. Each draws its bins as bars over an x axis from
 // `low` to `high`, with ticks on both axes, every non-empty bin's count above its bar (and at
 // least a hairline of bar, so a handful of bad elements among thousands still shows), and the
-// minimum and the mean marked by labelled vertical lines. Numbers are written the same whatever
-// the program's locale.
+// minimum and the mean marked by labelled vertical lines (at the axis end when beyond it). A
+// panel with an overflow count draws it as one more bar past `high`, in another colour, labelled
+// "> high". Numbers are written the same whatever the program's locale.
 #pragma once
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,11 +22,16 @@ struct HistogramPanel {
   double low = 0, high = 1;         // the bins split [low, high] evenly
   std::vector<std::size_t> counts;  // one per bin, at least one bin
   double min = 0, mean = 0;         // of the values counted, marked on the axis
+  std::optional<std::size_t> above_high;  // values above `high`, when the bins do not reach them all
 };
 
 struct SurfaceQuality;
 // The triangle-quality panel of OUTDIR/quality.svg.
 HistogramPanel surface_quality_panel(const SurfaceQuality& quality);
+
+struct CellQuality;
+// The cell aspect-ratio panel of OUTDIR/quality.svg, with the cells above its range as overflow.
+HistogramPanel cell_quality_panel(const CellQuality& quality);
 
 // The picture as text. Throws Error(Usage) for a panel without bins or with high <= low.
 std::string histogram_svg(const std::string& title, const std::vector<HistogramPanel>& panels);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "vorocrust/cell_quality.hpp"
+#include "vorocrust/cells.hpp"
 #include "vorocrust/mesh_info.hpp"
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/quality.hpp"
@@ -43,5 +45,36 @@ std::vector<std::string> run_report_inputs(const std::filesystem::path& report_j
 // angles in degrees, shares in percent, distances in the input's units and in percent of its
 // bounding-box diagonal.
 std::string surface_quality_json(const SurfaceQuality& quality, int indent = 2);
+
+// The volume-quality figures (cell_quality.hpp) as one JSON object: count, aspect ratio (min,
+// mean, max, the worst cell and its seed, the histogram with its overflow), volume, face count,
+// shortest relative edge. Totals over the cells, not the per-cell list. An infinite aspect ratio
+// (a cell without interior) is written as null, JSON having no infinity.
+std::string cell_quality_json(const CellQuality& quality, int indent = 2);
+
+// What `vorocrust quality OUTDIR --json` prints: the surface figures as surface_quality_json
+// gives them, at the top level, when the surface was measured, and the cell figures under
+// "cells" when the cells were. At least one of the two.
+std::string quality_json(const SurfaceQuality* surface, const CellQuality* cells, int indent = 2);
+
+// What OUTDIR/report.json holds after one `cells` run.
+struct CellsReport {
+  std::vector<std::string> command;  // argv as given
+  std::string seeds_file;
+  std::size_t seeds = 0;
+  const VoronoiMesh* mesh = nullptr;
+  const CellQuality* quality = nullptr;
+  std::vector<PhaseTiming> timings;
+  std::string previous;  // the text of OUTDIR/report.json before the run; empty if none
+};
+
+// In a folder without a mesh run's report: {"vorocrust_version", "command", "seeds_file",
+// "seeds", "status": "ok", "timings", "total_seconds", "cells"}, where "cells" is {"cells",
+// "faces", "interior_faces", "boundary_faces", "points", "volume", "quality":
+// cell_quality_json}. When `previous` is a mesh run's report (a JSON object naming its
+// "inputs"), that report with only its "cells" object replaced by this run's, which then also
+// names "seeds_file", "command" and "timings" of the rebuild: the run's inputs, options and
+// surface figures stay, so `vorocrust quality OUTDIR` still finds the model.
+std::string cells_report_json(const CellsReport& report, int indent = 2);
 
 }  // namespace vorocrust

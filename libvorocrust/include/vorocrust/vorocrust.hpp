@@ -2,6 +2,7 @@
 #pragma once
 
 #include "vorocrust/atomic_file.hpp"
+#include "vorocrust/cell_quality.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/merge_surfaces.hpp"

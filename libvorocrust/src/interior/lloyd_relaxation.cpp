@@ -2,6 +2,7 @@
 #include "interior/lloyd_relaxation.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "geometry/ball_tree.hpp"
 #include "refinement/ball_index.hpp"
@@ -29,6 +30,22 @@ double lloyd_relaxation(std::vector<Seed>& seeds, const BallIndex& protecting_ba
       Seed& seed = seeds[cell.seed];
       if (seed.kind != SeedKind::Interior) continue;
       Point step = cell.centroid - seed.position;
+      // A seed next to a surface seed's cell bounds that thin cell from inside: drawn to its own
+      // centroid it would back away from the surface and stretch the surface cells. It moves along
+      // the surface only, keeping its depth.
+      const Seed* nearest_surface = nullptr;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Index f : cell.faces) {
+        const VoronoiFace& face = mesh.faces[f];
+        const Index across = face.owner_seed == cell.seed ? face.neighbour_seed : face.owner_seed;
+        if (seeds[across].kind != SeedKind::Surface) continue;
+        const double d = (seeds[across].position - seed.position).squaredNorm();
+        if (d < nearest) nearest = d, nearest_surface = &seeds[across];
+      }
+      if (nearest_surface) {
+        const Point away = (seed.position - nearest_surface->position).normalized();
+        step -= std::max(0.0, step.dot(away)) * away;
+      }
       for (int halving = 0; halving < 4; ++halving, step *= 0.5) {
         const Point moved = seed.position + step;
         if (protecting_balls.covers(moved) || surface_balls.contains(moved)) continue;

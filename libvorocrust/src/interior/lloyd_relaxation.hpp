@@ -1,7 +1,10 @@
 // Internal: centroidal Voronoi relaxation of the interior seeds (paper 2.5, Figure 5d).
 //
 // Each iteration computes the cells and moves every interior seed (kind Interior) to its cell's
-// centroid; surface and outside seeds stay. A move may not take a seed into a protecting ball or
+// centroid; surface and outside seeds stay. A seed whose cell touches a surface seed's cell does
+// not move away from the nearest such surface seed (only the rest of its step is taken): drawn
+// deeper, it would stretch the thin surface cells it bounds (on cgal_fandisk their mean aspect
+// ratio rose from 3.26 to 3.36 in 20 free iterations). A move may not take a seed into a protecting ball or
 // a surface seed's ball, where it would cut into the surface facets: such a move is halved, up to
 // three times, and otherwise not made. The centroid lies inside the seed's own convex cell, hence
 // in its own region. Returns the largest move of the last iteration relative to the mover's

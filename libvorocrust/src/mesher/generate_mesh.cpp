@@ -157,6 +157,10 @@ MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, c
   CellsOptions cells_options;
   cells_options.threads = options.threads;
   result.cells = clock("cells", [&] { return compute_cells(result.seeds, cells_options); });
+  if (progress && !progress({"cell quality", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
+  CellQualityOptions quality_options;
+  quality_options.threads = options.threads;
+  result.cell_quality = clock("cell quality", [&] { return measure_cell_quality(result.cells, quality_options); });
   return result;
 }
 

@@ -8,8 +8,9 @@
 
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
-#include "vorocrust/quality_svg.hpp"
+#include "vorocrust/cell_quality.hpp"
 #include "vorocrust/quality.hpp"
+#include "vorocrust/quality_svg.hpp"
 
 namespace vorocrust {
 
@@ -62,31 +63,37 @@ void check(const HistogramPanel& panel) {
 void draw_panel(std::ostream& svg, const HistogramPanel& panel, double top) {
   const double x0 = kLeft, x1 = kWidth - kRight, y0 = top + kPanelHeight - kBottom, y1 = top + kTop;
   const std::size_t bins = panel.counts.size();
-  const std::size_t total = std::accumulate(panel.counts.begin(), panel.counts.end(), std::size_t{0});
-  const std::size_t largest = *std::max_element(panel.counts.begin(), panel.counts.end());
+  // The overflow bar, if any, is one more slot after the bins.
+  std::vector<std::size_t> bars = panel.counts;
+  if (panel.above_high) bars.push_back(*panel.above_high);
+  const std::size_t binned = std::accumulate(panel.counts.begin(), panel.counts.end(), std::size_t{0});
+  const std::size_t largest = *std::max_element(bars.begin(), bars.end());
   const double step = nice_step(std::max<double>(1, static_cast<double>(largest) / 4));
   // Headroom above the tallest bar for its count.
   const double y_max = step * std::max(1.0, std::ceil(1.1 * static_cast<double>(largest) / step));
+  const double bar = (x1 - x0) / static_cast<double>(bars.size());
+  const double x_high = x0 + bar * static_cast<double>(bins);
   const auto x_of = [&](double v) {
-    return x0 + (x1 - x0) * std::clamp((v - panel.low) / (panel.high - panel.low), 0.0, 1.0);
+    return x0 + (x_high - x0) * std::clamp((v - panel.low) / (panel.high - panel.low), 0.0, 1.0);
   };
   const auto y_of = [&](double count) { return y0 - (y0 - y1) * count / y_max; };
-  const double bar = (x1 - x0) / static_cast<double>(bins);
 
   svg << "<text x=\"" << coordinate(x0) << "\" y=\"" << coordinate(top + 24) << "\" font-size=\"15\">"
       << escaped(panel.label) << "</text>\n";
   svg << "<text x=\"" << coordinate(x1) << "\" y=\"" << coordinate(top + 24)
-      << "\" font-size=\"12\" text-anchor=\"end\" fill=\"#555\">" << total << " in " << bins << " bins</text>\n";
+      << "\" font-size=\"12\" text-anchor=\"end\" fill=\"#555\">" << binned << " in " << bins << " bins";
+  if (panel.above_high) svg << ", " << *panel.above_high << " above " << value(panel.high);
+  svg << "</text>\n";
 
   // Bars, each non-empty one at least a hairline high, with its count above it where it fits.
   const bool label_counts = bar >= 14;
-  for (std::size_t k = 0; k < bins; ++k) {
-    const std::size_t n = panel.counts[k];
+  for (std::size_t k = 0; k < bars.size(); ++k) {
+    const std::size_t n = bars[k];
     if (n == 0) continue;
     const double y = std::min(y_of(static_cast<double>(n)), y0 - 1.0);
     svg << "<rect x=\"" << coordinate(x0 + bar * static_cast<double>(k) + 1) << "\" y=\"" << coordinate(y)
         << "\" width=\"" << coordinate(std::max(1.0, bar - 2)) << "\" height=\"" << coordinate(y0 - y)
-        << "\" fill=\"#4a7fb5\"/>\n";
+        << "\" fill=\"" << (k < bins ? "#4a7fb5" : "#b5834a") << "\"/>\n";
     if (label_counts) {
       svg << "<text x=\"" << coordinate(x0 + bar * (static_cast<double>(k) + 0.5)) << "\" y=\""
           << coordinate(y - 3) << "\" font-size=\"9\" text-anchor=\"middle\">" << n << "</text>\n";
@@ -110,6 +117,11 @@ void draw_panel(std::ostream& svg, const HistogramPanel& panel, double top) {
     svg << "<path d=\"M" << coordinate(x) << ' ' << coordinate(y0) << " V" << coordinate(y0 + 5)
         << "\" stroke=\"#333\"/>\n<text x=\"" << coordinate(x) << "\" y=\"" << coordinate(y0 + 18)
         << "\" font-size=\"11\" text-anchor=\"middle\">" << value(edge) << "</text>\n";
+  }
+  if (panel.above_high) {
+    // Below the tick labels, clear of the label of `high` next to it.
+    svg << "<text x=\"" << coordinate(x_high + bar / 2) << "\" y=\"" << coordinate(y0 + 32)
+        << "\" font-size=\"11\" text-anchor=\"middle\">&gt; " << value(panel.high) << "</text>\n";
   }
 
   // The minimum labelled to the left of its line and the mean to the right, so the labels stay
@@ -159,6 +171,18 @@ HistogramPanel surface_quality_panel(const SurfaceQuality& quality) {
   panel.counts = quality.quality_histogram;
   panel.min = quality.min_quality;
   panel.mean = quality.mean_quality;
+  return panel;
+}
+
+HistogramPanel cell_quality_panel(const CellQuality& quality) {
+  HistogramPanel panel;
+  panel.label = "cell aspect ratio R / r (circumradius over inradius)";
+  panel.low = quality.histogram_low;
+  panel.high = quality.histogram_high;
+  panel.counts = quality.aspect_ratio_histogram;
+  panel.min = quality.min_aspect_ratio;
+  panel.mean = quality.mean_aspect_ratio;
+  panel.above_high = quality.aspect_ratio_above_high;
   return panel;
 }
 

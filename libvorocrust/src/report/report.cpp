@@ -100,6 +100,57 @@ json quality_object(const SurfaceQuality& q) {
             {"output", topology_object(q.output_topology)}}}};
 }
 
+// A figure that may be infinite (a cell without interior): null then, JSON having no infinity.
+json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+// The paper's section 3 volume figure, the maximum aspect ratio, with its distribution and the
+// other per-cell measures.
+json cell_quality_object(const CellQuality& q) {
+  return {{"cells", q.cells.size()},
+          {"aspect_ratio",
+           {{"definition",
+             "radius of the smallest enclosing sphere / radius of the largest inscribed ball; sqrt(3) for a cube"},
+            {"min", finite_or_null(q.min_aspect_ratio)},
+            {"mean", finite_or_null(q.mean_aspect_ratio)},
+            {"max", finite_or_null(q.max_aspect_ratio)},
+            {"worst_cell", q.worst_cell},
+            {"worst_seed", q.worst_seed},
+            {"histogram",
+             {{"low", q.histogram_low},
+              {"high", q.histogram_high},
+              {"counts", q.aspect_ratio_histogram},
+              {"above_high", q.aspect_ratio_above_high}}}}},
+          {"volume", {{"min", q.min_volume}, {"max", q.max_volume}, {"total", q.total_volume}}},
+          {"faces", {{"min", q.min_faces}, {"mean", q.mean_faces}, {"max", q.max_faces}}},
+          {"shortest_edge",
+           {{"definition", "shortest edge / cube root of the cell volume; 1 for a cube"},
+            {"min", q.min_shortest_edge_relative},
+            {"mean", q.mean_shortest_edge_relative},
+            {"cell", q.shortest_edge_cell}}}};
+}
+
+// The counts of a Voronoi mesh, with its quality when measured.
+json cells_object(const VoronoiMesh& mesh, const CellQuality* quality) {
+  const std::size_t interior = count_interior_faces(mesh);
+  const double volume = total_volume(mesh);
+  json doc = {{"cells", mesh.cells.size()},         {"faces", mesh.faces.size()},
+              {"interior_faces", interior},         {"boundary_faces", mesh.faces.size() - interior},
+              {"points", mesh.points.size()},       {"volume", volume}};
+  if (quality) doc["quality"] = cell_quality_object(*quality);
+  return doc;
+}
+
+// Timings as a list of {phase, seconds}, and their sum.
+std::pair<json, double> timings_object(const std::vector<PhaseTiming>& timings) {
+  json list = json::array();
+  double total = 0;
+  for (const PhaseTiming& t : timings) {
+    list.push_back({{"phase", t.name}, {"seconds", t.seconds}});
+    total += t.seconds;
+  }
+  return {list, total};
+}
+
 }  // namespace
 
 std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh& mesh, const MeshInfo& info,
@@ -109,12 +160,7 @@ std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh&
 
 std::string run_report_json(const RunReport& report, int indent) {
   const MeshOptions& o = report.options;
-  json timings = json::array();
-  double total = 0;
-  for (const PhaseTiming& t : report.timings) {
-    timings.push_back({{"phase", t.name}, {"seconds", t.seconds}});
-    total += t.seconds;
-  }
+  const auto [timings, total] = timings_object(report.timings);
   json doc = {{"vorocrust_version", VOROCRUST_VERSION},
               {"command", report.command},
               {"inputs", report.inputs},
@@ -197,13 +243,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                        {"spoke_seeds", i.spoke_seeds},       {"lattice_seeds", i.lattice_seeds},
                        {"lipschitz_shrinks", i.lipschitz_shrinks}, {"rounds", i.rounds},
                        {"cvt_iterations", i.cvt_iterations}, {"cvt_last_move", i.cvt_last_move}};
-    const std::size_t interior_faces = count_interior_faces(m.cells);
-    doc["cells"] = {{"cells", m.cells.cells.size()},
-                    {"faces", m.cells.faces.size()},
-                    {"interior_faces", interior_faces},
-                    {"boundary_faces", m.cells.faces.size() - interior_faces},
-                    {"points", m.cells.points.size()},
-                    {"volume", total_volume(m.cells)}};
+    doc["cells"] = cells_object(m.cells, m.cell_quality ? &*m.cell_quality : nullptr);
   }
   if (report.mesh && report.input && report.validation) {
     doc["input"] = info_object(report.inputs, *report.mesh, *report.input, *report.validation);
@@ -234,5 +274,37 @@ std::vector<std::string> run_report_inputs(const std::filesystem::path& report_j
 }
 
 std::string surface_quality_json(const SurfaceQuality& quality, int indent) { return quality_object(quality).dump(indent); }
+
+std::string cell_quality_json(const CellQuality& quality, int indent) {
+  return cell_quality_object(quality).dump(indent);
+}
+
+std::string quality_json(const SurfaceQuality* surface, const CellQuality* cells, int indent) {
+  json doc = surface ? quality_object(*surface) : json::object();
+  if (cells) doc["cells"] = cell_quality_object(*cells);
+  return doc.dump(indent);
+}
+
+std::string cells_report_json(const CellsReport& report, int indent) {
+  const auto [timings, total] = timings_object(report.timings);
+  json cells = report.mesh ? cells_object(*report.mesh, report.quality) : json::object();
+  json previous = report.previous.empty() ? json() : json::parse(report.previous, nullptr, false);
+  if (previous.is_object() && previous.contains("inputs")) {
+    cells["seeds_file"] = report.seeds_file;
+    cells["command"] = report.command;
+    cells["timings"] = timings;
+    previous["cells"] = cells;
+    return previous.dump(indent);
+  }
+  json doc = {{"vorocrust_version", VOROCRUST_VERSION},
+              {"command", report.command},
+              {"seeds_file", report.seeds_file},
+              {"seeds", report.seeds},
+              {"status", "ok"},
+              {"timings", timings},
+              {"total_seconds", total}};
+  if (report.mesh) doc["cells"] = cells;
+  return doc.dump(indent);
+}
 
 }  // namespace vorocrust

@@ -1,0 +1,169 @@
+// The volume quality of the paper's section 3: per cell the aspect ratio (smallest enclosing
+// sphere over largest inscribed ball), volume, face count and shortest edge; then the figures
+// over all cells.
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "quality/spheres.hpp"
+#include "vorocrust/cell_quality.hpp"
+#include "vorocrust/error.hpp"
+
+namespace vorocrust {
+
+void CellQualityOptions::check() const {
+  if (histogram_bins < 1 || histogram_bins > 1000) {
+    throw Error(Error::Kind::Usage,
+                "the aspect-ratio histogram needs 1 to 1000 bins, got " + std::to_string(histogram_bins));
+  }
+  if (!(histogram_high > 1) || !std::isfinite(histogram_high)) {
+    throw Error(Error::Kind::Usage, "the aspect-ratio histogram must end above 1, got " + std::to_string(histogram_high));
+  }
+  if (threads < 0) throw Error(Error::Kind::Usage, "threads must be 0 (all) or more, got " + std::to_string(threads));
+}
+
+namespace {
+
+void check_cell(const VoronoiMesh& mesh, std::size_t c) {
+  const auto fail = [&](const std::string& why) {
+    throw Error(Error::Kind::InvalidGeometry, "cell " + std::to_string(c) + " " + why);
+  };
+  const VoronoiCell& cell = mesh.cells[c];
+  if (cell.faces.empty()) fail("has no faces");
+  for (Index f : cell.faces) {
+    if (f >= mesh.faces.size()) fail("names face " + std::to_string(f) + " of " + std::to_string(mesh.faces.size()));
+    if (mesh.faces[f].points.size() < 3) fail("has face " + std::to_string(f) + " with fewer than three points");
+    for (Index p : mesh.faces[f].points) {
+      if (p >= mesh.points.size()) fail("has point " + std::to_string(p) + " of " + std::to_string(mesh.points.size()));
+    }
+  }
+}
+
+CellShape measure_cell(const VoronoiMesh& mesh, const VoronoiCell& cell) {
+  CellShape shape;
+  shape.volume = cell.volume;
+  shape.faces = cell.faces.size();
+
+  std::vector<Index> ids;
+  shape.shortest_edge = std::numeric_limits<double>::infinity();
+  for (Index f : cell.faces) {
+    const std::vector<Index>& polygon = mesh.faces[f].points;
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      ids.push_back(polygon[k]);
+      const double edge = (mesh.points[polygon[k]] - mesh.points[polygon[(k + 1) % polygon.size()]]).norm();
+      shape.shortest_edge = std::min(shape.shortest_edge, edge);
+    }
+  }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  std::vector<Point> points;
+  points.reserve(ids.size());
+  Point mean = Point::Zero();
+  for (Index p : ids) {
+    points.push_back(mesh.points[p]);
+    mean += points.back();
+  }
+  mean /= static_cast<double>(points.size());
+  double extent = 0;
+  for (const Point& p : points) extent = std::max(extent, (p - mean).norm());
+
+  // Face planes from their polygons (Newell's normal, turned away from the points' mean, which is
+  // inside the convex cell), each moved out to the farthest cell point: the plane of a tiny face,
+  // whose normal rounding may tilt, then never cuts into the cell.
+  std::vector<quality::Plane> planes;
+  planes.reserve(cell.faces.size());
+  for (Index f : cell.faces) {
+    const std::vector<Index>& polygon = mesh.faces[f].points;
+    Point normal = Point::Zero(), centre = Point::Zero();
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const Point a = mesh.points[polygon[k]] - mean, b = mesh.points[polygon[(k + 1) % polygon.size()]] - mean;
+      normal += a.cross(b);
+      centre += a;
+    }
+    const double length = normal.norm();
+    if (!(length > 0)) continue;
+    normal /= length;
+    if (normal.dot(centre) < 0) normal = -normal;
+    double offset = -std::numeric_limits<double>::infinity();
+    for (const Point& p : points) offset = std::max(offset, normal.dot(p - mean));
+    planes.push_back({normal, offset + normal.dot(mean)});
+  }
+
+  const quality::Sphere outer = quality::smallest_enclosing_sphere(std::move(points));
+  const quality::Sphere inner =
+      extent > 0 ? quality::largest_inscribed_ball(planes, mean, extent) : quality::Sphere{mean, 0};
+  shape.circumcentre = outer.centre;
+  shape.circumradius = outer.radius;
+  shape.incentre = inner.centre;
+  shape.inradius = inner.radius;
+  shape.aspect_ratio = inner.radius > 0 ? outer.radius / inner.radius : std::numeric_limits<double>::infinity();
+  shape.shortest_edge_relative = cell.volume > 0 ? shape.shortest_edge / std::cbrt(cell.volume) : 0;
+  return shape;
+}
+
+void summarise(const VoronoiMesh& mesh, const CellQualityOptions& options, CellQuality& q) {
+  const std::size_t n = q.cells.size();
+  q.histogram_high = options.histogram_high;
+  q.aspect_ratio_histogram.assign(options.histogram_bins, 0);
+  const double inf = std::numeric_limits<double>::infinity();
+  q.min_aspect_ratio = q.min_volume = q.min_shortest_edge_relative = inf;
+  q.max_aspect_ratio = q.max_volume = -inf;
+  q.min_faces = std::numeric_limits<std::size_t>::max();
+  double ratio_sum = 0, faces_sum = 0, edge_sum = 0;
+  const double width = (q.histogram_high - q.histogram_low) / static_cast<double>(options.histogram_bins);
+  for (std::size_t c = 0; c < n; ++c) {
+    const CellShape& s = q.cells[c];
+    q.min_aspect_ratio = std::min(q.min_aspect_ratio, s.aspect_ratio);
+    if (s.aspect_ratio > q.max_aspect_ratio) {
+      q.max_aspect_ratio = s.aspect_ratio;
+      q.worst_cell = c;
+    }
+    ratio_sum += s.aspect_ratio;
+    if (s.aspect_ratio > q.histogram_high) {
+      ++q.aspect_ratio_above_high;
+    } else {
+      const double bin = std::floor((s.aspect_ratio - q.histogram_low) / width);
+      ++q.aspect_ratio_histogram[static_cast<std::size_t>(
+          std::clamp(bin, 0.0, static_cast<double>(options.histogram_bins - 1)))];
+    }
+    q.min_volume = std::min(q.min_volume, s.volume);
+    q.max_volume = std::max(q.max_volume, s.volume);
+    q.total_volume += s.volume;
+    q.min_faces = std::min(q.min_faces, s.faces);
+    q.max_faces = std::max(q.max_faces, s.faces);
+    faces_sum += static_cast<double>(s.faces);
+    if (s.shortest_edge_relative < q.min_shortest_edge_relative) {
+      q.min_shortest_edge_relative = s.shortest_edge_relative;
+      q.shortest_edge_cell = c;
+    }
+    edge_sum += s.shortest_edge_relative;
+  }
+  const double count = static_cast<double>(n);
+  q.mean_aspect_ratio = ratio_sum / count;
+  q.mean_faces = faces_sum / count;
+  q.mean_shortest_edge_relative = edge_sum / count;
+  q.worst_seed = mesh.cells[q.worst_cell].seed;
+}
+
+}  // namespace
+
+CellQuality measure_cell_quality(const VoronoiMesh& mesh, const CellQualityOptions& options) {
+  options.check();
+  if (mesh.cells.empty()) throw Error(Error::Kind::InvalidGeometry, "the mesh has no cells to measure");
+  for (std::size_t c = 0; c < mesh.cells.size(); ++c) check_cell(mesh, c);
+  CellQuality q;
+  q.cells.resize(mesh.cells.size());
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, mesh.cells.size(),
+                      [&](std::size_t c) { q.cells[c] = measure_cell(mesh, mesh.cells[c]); });
+  });
+  summarise(mesh, options, q);
+  return q;
+}
+
+}  // namespace vorocrust
