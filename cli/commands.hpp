@@ -23,6 +23,7 @@ struct MeshArgs {
   bool allow_self_intersections = false;
   std::string stop_after;  // "" (everything), "balls" or "surface"
   std::string interior = "random";
+  std::vector<double> box;  // empty, or xmin ymin zmin xmax ymax zmax
   std::vector<std::string> formats{"vtu", "openfoam"};
   std::vector<std::string> command_line;
 };

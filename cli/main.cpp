@@ -62,6 +62,12 @@ int main(int argc, char** argv) {
   mesh_cmd->add_option("--smoothing-iterations", mesh.options.smoothing_iterations,
                        "Rounds of adaptive Loop subdivision inside smooth patches before refinement")
       ->capture_default_str();
+  mesh_cmd->add_option("--box", mesh.box,
+                       "The domain around open sheets (terrains, faults, horizons): xmin ymin zmin xmax ymax zmax. "
+                       "Its sides join the surface, and what no material fills inside it becomes the material "
+                       "'domain', which a sheet splits. Default for an input with open edges: its bounding box "
+                       "grown by a tenth of its diagonal on every side")
+      ->expected(6);
   mesh_cmd->add_option("--interior", mesh.interior,
                        "Interior seeds: 'random' (Poisson-disk, graded from the surface inward), 'lattice' "
                        "(cubic, hex-dominant cells), 'cvt' (random, then Lloyd iterations)")

@@ -225,7 +225,7 @@ the same document as the CLI's OUTDIR/report.json.
       [](const py::object& model, double lipschitz, double sharp_angle, const py::object& max_size,
          const py::object& sizing, int smoothing_iterations, const std::string& interior, int cvt_iterations,
          const std::string& stop_after, std::uint64_t seed, int threads, bool allow_self_intersections,
-         const py::object& progress) {
+         const std::optional<std::array<double, 6>>& box, const py::object& progress) {
         MeshOptions options;
         options.lipschitz = lipschitz;
         options.sharp_angle_degrees = sharp_angle;
@@ -237,11 +237,12 @@ the same document as the CLI's OUTDIR/report.json.
         options.stop_after = stage_named(stop_after);
         options.seed = seed;
         options.threads = threads;
+        options.box = box;
         return run_mesh(model, options, allow_self_intersections, progress);
       },
       py::arg("model"), py::arg("lipschitz"), py::arg("sharp_angle"), py::arg("max_size"), py::arg("sizing"),
       py::arg("smoothing_iterations"), py::arg("interior"), py::arg("cvt_iterations"), py::arg("stop_after"),
-      py::arg("seed"), py::arg("threads"), py::arg("allow_self_intersections"), py::arg("progress"),
+      py::arg("seed"), py::arg("threads"), py::arg("allow_self_intersections"), py::arg("box"), py::arg("progress"),
       "The pipeline behind vorocrust.mesh(), which documents the arguments.");
 }
 

@@ -80,7 +80,7 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_O
          max_size=None, sizing=None, smoothing_iterations=DEFAULT_OPTIONS["smoothing_iterations"],
          interior=DEFAULT_OPTIONS["interior"], cvt_iterations=DEFAULT_OPTIONS["cvt_iterations"],
          stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
-         allow_self_intersections=False, progress=None):
+         allow_self_intersections=False, box=None, progress=None):
     """Meshes a model: `vorocrust mesh` without the files. Returns a MeshResult.
 
     model: a file path, a list of paths (merged into one model, one group per file), a
@@ -97,6 +97,10 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_O
     seed: random seed; equal model, options and seed give equal results.
     threads: worker threads, 0 for all cores; results do not depend on it.
     allow_self_intersections: mesh even when input faces intersect each other.
+    box: (xmin, ymin, zmin, xmax, ymax, zmax), the domain around open sheets (--box): its sides
+        join the surface and what no material fills inside it becomes the material "domain".
+        None: a model with open edges gets its bounding box grown by a tenth of its diagonal on
+        every side, a closed model no box.
     progress: a callable progress(phase, fraction) with phase a str and fraction in [0, 1] or
         None when unknown, called at each new phase and at most every 50 ms within one. Return
         False (any false value but None) to cancel the run: it raises Cancelled and has
@@ -113,7 +117,8 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_O
         max_size=None if max_size is None or math.isinf(max_size) else float(max_size), sizing=sizing,
         smoothing_iterations=int(smoothing_iterations), interior=interior,
         cvt_iterations=int(cvt_iterations), stop_after=stop_after, seed=int(seed), threads=int(threads),
-        allow_self_intersections=bool(allow_self_intersections), progress=progress)
+        allow_self_intersections=bool(allow_self_intersections),
+        box=None if box is None else tuple(float(x) for x in box), progress=progress)
 
 
 #: The formats written from the cells (the volume mesh), by name in OUTPUT_FORMATS.

@@ -20,13 +20,10 @@ import xml.etree.ElementTree as ElementTree
 import vtk
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from vtk_volume import vtk_boundary_volume  # noqa: E402
+from volume_mesh import check_mesh, cell_array, obj_enclosed_volume, read_vtu, vtk_boundary_volume, vtk_cell_volumes  # noqa: E402
 
 BINARY, MODELS = sys.argv[1:3]
 del sys.argv[1:3]
-
-CHECKMESH = shutil.which("checkMesh") or "/usr/bin/checkMesh"
-
 
 def run(*args):
     return subprocess.run([BINARY, *args], capture_output=True, text=True, timeout=600)
@@ -54,33 +51,6 @@ def in_ball(c, r):
 
 def split_ball(c, r):
     return lambda x, y, z: (1 if x < c else 2) if (x - c) ** 2 + (y - c) ** 2 + (z - c) ** 2 < r * r else 0
-
-
-def read_vtu(path):
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
-
-
-def cell_array(grid, name):
-    a = grid.GetCellData().GetArray(name)
-    return [a.GetValue(i) for i in range(a.GetNumberOfTuples())]
-
-
-def vtk_cell_volumes(grid):
-    f = vtk.vtkCellSizeFilter()
-    f.SetInputData(grid)
-    f.ComputeVolumeOn()
-    f.Update()
-    return cell_array(f.GetOutput(), "Volume")
-
-
-def check_mesh(case):
-    env = dict(os.environ, WM_PROJECT_DIR="/usr/share/openfoam")
-    r = subprocess.run([CHECKMESH, "-case", case], capture_output=True, text=True, timeout=600, env=env)
-    m = re.search(r"Mesh non-orthogonality Max: (\S+) average: (\S+)", r.stdout)
-    return r, (float(m.group(1)), float(m.group(2))) if m else None
 
 
 class Cells(unittest.TestCase):
@@ -255,21 +225,6 @@ class Cells(unittest.TestCase):
 
         r = run("cells", self.path("all.csv"), "-o", self.path("out"), "--format", "stl")
         self.assertEqual(r.returncode, 2, r.stderr)
-
-
-def obj_enclosed_volume(path):
-    """The volume a closed OBJ triangle surface encloses, by the divergence theorem."""
-    vertices, volume = [], 0.0
-    with open(path) as f:
-        for line in f:
-            parts = line.split()
-            if parts and parts[0] == "v":
-                vertices.append(tuple(float(x) for x in parts[1:4]))
-            elif parts and parts[0] == "f":
-                a, b, c = (vertices[int(p.split("/")[0]) - 1] for p in parts[1:4])
-                volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
-                           + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6
-    return abs(volume)
 
 
 class MeshRuns(unittest.TestCase):

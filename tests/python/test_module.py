@@ -206,6 +206,20 @@ class Module(unittest.TestCase):
         np.testing.assert_array_equal(result.surface.triangles, self.result.surface.triangles)
         self.assertEqual(result.report()["inputs"], ["arrays"])
 
+    def test_an_open_sheet_meshes_in_the_box_given(self):
+        # A square sheet across the middle of the unit cube: one material on both sides.
+        vertices = np.array([[0.2, 0.2, 0.5], [0.8, 0.2, 0.5], [0.8, 0.8, 0.5], [0.2, 0.8, 0.5]])
+        triangles = np.array([[0, 1, 2], [0, 2, 3]])
+        result = vorocrust.mesh((vertices, triangles), box=(0, 0, 0, 1, 1, 1), max_size=0.2, seed=3)
+        cells = result.cells
+        self.assertAlmostEqual(cells.volumes.sum(), 1.0, delta=1e-9)
+        self.assertAlmostEqual(closed_volume(cells), 1.0, delta=1e-9)
+        self.assertEqual(set(cells.materials.tolist()), {1})
+        self.assertEqual(result.report()["options"]["box"], [0, 0, 0, 1, 1, 1])
+        with self.assertRaises(vorocrust.InvalidGeometryError) as caught:
+            vorocrust.mesh((vertices, triangles), box=(0, 0, 0, 1, 1, 0.4))
+        self.assertIn("does not lie inside the box", str(caught.exception))
+
     def test_progress_reports_every_phase(self):
         phases = [p for p, _ in self.phases]
         for phase in ("features", "slivers", "surface quality"):

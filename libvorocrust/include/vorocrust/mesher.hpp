@@ -5,6 +5,7 @@
 // Runs are reproducible: equal input, options and seed give equal output.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <limits>
@@ -50,6 +51,12 @@ struct MeshOptions {
   // default while it costs more than it gives: the surface grows (sandia_torus: 9 216 faces to
   // 189 504) and the refinement with it.
   int smoothing_iterations = 0;
+  // The domain around open sheets (paper Figure 17): {xmin, ymin, zmin, xmax, ymax, zmax}. Its
+  // sides join the surface and what is outside every material inside it becomes the material
+  // "domain"; an unlabelled sheet then has that material on both sides and splits the cells
+  // touching it. Without a box, an input with open edges gets its bounding box grown by a tenth
+  // of its diagonal on every side; a closed input gets none.
+  std::optional<std::array<double, 6>> box;
   InteriorMode interior = InteriorMode::Random;
   int cvt_iterations = 20;  // Lloyd iterations of InteriorMode::Cvt
   Stage stop_after = Stage::Cells;
@@ -125,8 +132,9 @@ struct FeatureCounts {
 struct MeshResult {
   std::vector<PhaseTiming> timings;
   FeatureCounts features;
-  // The surface the balls cover: the input after patch smoothing (paper 2.2), which keeps every
-  // sharp feature exactly and moves only vertices inside smooth patches.
+  // The surface the balls cover: the input, with the box's sides when it has one, after patch
+  // smoothing (paper 2.2), which keeps every sharp feature exactly and moves only vertices
+  // inside smooth patches.
   SurfaceMesh smoothed_input;
   std::vector<Ball> balls;
   RefinementStats refinement;

@@ -5,6 +5,7 @@
 #include "features/smooth_patches.hpp"
 #include "features/strata.hpp"
 #include "interior/lloyd_relaxation.hpp"
+#include "io/enclose_in_box.hpp"
 #include "interior/sample_interior.hpp"
 #include "refinement/refine_balls.hpp"
 #include "seeds/eliminate_slivers.hpp"
@@ -57,10 +58,19 @@ class PhaseClock {
 
 }  // namespace
 
-MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, const ProgressCallback& progress) {
+MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, const ProgressCallback& progress) {
   options.check();
   MeshResult result;
   PhaseClock clock(result.timings);
+  // The domain: the model, in its box when it has open sheets or the caller gives one.
+  std::optional<SurfaceMesh> boxed;
+  if (options.box) {
+    const auto& b = *options.box;
+    boxed = enclose_in_box(model, geometry::Box{Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5])});
+  } else if (needs_box(model)) {
+    boxed = enclose_in_box(model, default_box(model));
+  }
+  const SurfaceMesh& input = boxed ? *boxed : model;
   const double sharp_angle = options.sharp_angle_degrees * std::numbers::pi / 180;
   if (progress && !progress({"features", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
 

@@ -175,6 +175,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                                                                 : "cells"},
                 {"interior", to_string(o.interior)},
                 {"cvt_iterations", o.cvt_iterations},
+                {"box", o.box ? json(*o.box) : json(nullptr)},
                 {"seed", o.seed},
                 {"threads", o.threads}}},
               {"status", report.status},

@@ -73,6 +73,10 @@ RegionLocator::Hit RegionLocator::first_hit(const Point& p, const Point& directi
   return best;
 }
 
+bool RegionLocator::surface_between(const Point& p, const Point& q) const {
+  return first_hit(p, q - p).t <= (q - p).norm();
+}
+
 std::int32_t RegionLocator::region_of(const Point& p, const Point& direction) const {
   // Directions to fall back on, spread over the sphere and away from the axes, so that a
   // retry does not graze the same axis-aligned faces.

@@ -22,6 +22,10 @@ class RegionLocator {
   // side is retried along other directions. Thread-safe.
   std::int32_t region_of(const Point& p, const Point& direction) const;
 
+  // Whether the segment from p to q meets an input face: two seeds of one region on either side
+  // of an open sheet do, two seeds on one side of a closed surface do not. Thread-safe.
+  bool surface_between(const Point& p, const Point& q) const;
+
   std::int32_t region_behind(Index face) const;
   std::int32_t region_in_front(Index face) const;
   // The names of the labels above: the surface's own, or "outside" and "inside".

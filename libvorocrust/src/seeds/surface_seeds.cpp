@@ -22,9 +22,16 @@ SurfaceSeeds surface_seeds(const BallIndex& balls, const std::vector<SeedPair>& 
     }
   });
 
+  // A pair whose seeds share a region bounds the surface only across an open sheet; elsewhere
+  // (both points of a triplet on one side, where the surface curves tightly) it bounds nothing.
+  std::vector<char> bounds_surface(pairs.size());
+  tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
+    bounds_surface[i] = out.seeds[2 * i].region != out.seeds[2 * i + 1].region ||
+                        regions.surface_between(pairs[i].points[0], pairs[i].points[1]);
+  });
   std::vector<Index> vertex_of(balls.size(), static_cast<Index>(-1));
   for (std::size_t i = 0; i < pairs.size(); ++i) {
-    if (out.seeds[2 * i].region == out.seeds[2 * i + 1].region) continue;
+    if (!bounds_surface[i]) continue;
     for (std::uint32_t b : pairs[i].balls) vertex_of[b] = 0;
   }
   SurfaceMesh& surface = out.surface;
@@ -38,8 +45,8 @@ SurfaceSeeds surface_seeds(const BallIndex& balls, const std::vector<SeedPair>& 
   surface.region_names = regions.region_names();
   std::vector<RegionPair> face_regions;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (!bounds_surface[i]) continue;
     const std::int32_t front = out.seeds[2 * i].region, back = out.seeds[2 * i + 1].region;
-    if (front == back) continue;
     const auto& b = pairs[i].balls;
     // The triangle (b0, b1, b2) faces points[0], the seed of region `front`.
     Triangle t{vertex_of[b[0]], vertex_of[b[1]], vertex_of[b[2]]};

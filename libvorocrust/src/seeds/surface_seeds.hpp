@@ -11,7 +11,9 @@ namespace vorocrust {
 
 struct SurfaceSeeds {
   std::vector<Seed> seeds;  // two per seed pair, in the pairs' order
-  // The Voronoi facets between seeds of different regions. With no half-covered pair left each
+  // The Voronoi facets between the two seeds of a pair that the input surface passes between:
+  // seeds of different regions, or of one region on either side of an open sheet (which splits
+  // the cells there all the same). With no half-covered pair left each
   // is the triangle of the three ball centres dual to its seed pair, so the vertices are ball
   // centres: corners and crease points sit exactly on the input's features. Each face's normal
   // points to the side of the lower region index (outwards from a single material).

@@ -1,0 +1,88 @@
+// The box around open sheets (paper section 3, Figure 17).
+#include "io/enclose_in_box.hpp"
+
+#include <cstdio>
+#include <string>
+
+#include "core/edge_topology.hpp"
+#include "vorocrust/error.hpp"
+
+namespace vorocrust {
+
+namespace {
+
+std::string format_point(const Point& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.9g, %.9g, %.9g)", p.x(), p.y(), p.z());
+  return text;
+}
+
+}  // namespace
+
+bool needs_box(const SurfaceMesh& input) {
+  const EdgeTopology topology = build_edge_topology(input);
+  for (std::size_t e = 0; e < topology.num_edges(); ++e) {
+    if (topology.is_boundary(e)) return true;
+  }
+  return false;
+}
+
+geometry::Box default_box(const SurfaceMesh& input) {
+  geometry::Box box;
+  for (const Point& p : input.vertices) box.include(p);
+  const Point margin = Point::Constant(0.1 * (box.hi - box.lo).norm());
+  box.lo -= margin;
+  box.hi += margin;
+  return box;
+}
+
+SurfaceMesh enclose_in_box(const SurfaceMesh& input, const geometry::Box& box) {
+  if (!((box.lo.array() < box.hi.array()).all())) {
+    throw Error(Error::Kind::Usage, "--box: the lower corner " + format_point(box.lo) +
+                                        " must lie below the upper corner " + format_point(box.hi) + " in x, y and z");
+  }
+  for (std::size_t v = 0; v < input.vertices.size(); ++v) {
+    const Point& p = input.vertices[v];
+    if (!((box.lo.array() < p.array()).all() && (p.array() < box.hi.array()).all())) {
+      throw Error(Error::Kind::InvalidGeometry,
+                  "vertex " + std::to_string(v) + " at " + format_point(p) + " does not lie inside the box " +
+                      format_point(box.lo) + " .. " + format_point(box.hi) + ": the box must hold the whole model");
+    }
+  }
+  SurfaceMesh out = input;
+  // Region 0 inside the box is the domain; an unlabelled input is all domain on both sides.
+  std::int32_t domain = 0;
+  if (out.has_regions()) {
+    out.region_names.push_back("domain");
+    domain = static_cast<std::int32_t>(out.region_names.size() - 1);
+    for (RegionPair& pair : out.face_regions) {
+      if (pair.back == 0) pair.back = domain;
+      if (pair.front == 0) pair.front = domain;
+    }
+  } else {
+    out.region_names = {"outside", "domain"};
+    domain = 1;
+    out.face_regions.assign(out.triangles.size(), RegionPair{domain, domain});
+  }
+
+  const Index first = static_cast<Index>(out.vertices.size());
+  for (int corner = 0; corner < 8; ++corner) {
+    out.vertices.emplace_back(corner & 1 ? box.hi.x() : box.lo.x(), corner & 2 ? box.hi.y() : box.lo.y(),
+                              corner & 4 ? box.hi.z() : box.lo.z());
+  }
+  const Index group = static_cast<Index>(out.groups.size());
+  out.groups.push_back({"box", ""});
+  // Each side as a quad of corner bits, counter-clockwise seen from outside.
+  static constexpr int kSides[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                       {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& side : kSides) {
+    for (const Triangle& t : {Triangle{first + side[0], first + side[1], first + side[2]},
+                              Triangle{first + side[0], first + side[2], first + side[3]}}) {
+      out.add_triangle(t, group);
+      out.face_regions.back() = RegionPair{domain, 0};
+    }
+  }
+  return out;
+}
+
+}  // namespace vorocrust
