@@ -142,8 +142,10 @@ TEST(Cells, BadSeedSetsAreErrors) {
 namespace vorocrust {
 namespace {
 
-// The fallback for cells at odds with their neighbours gives the cells the containers give.
-TEST(RecomputeNearestFirst, AgreesWithTheContainersOnRandomSeeds) {
+// Every vertex of every cell is a Voronoi vertex, checked against all seeds by brute force: no
+// seed is nearer than the cell's own, at least four are as near, and the seeds across the faces
+// are among them.
+TEST(ComputeVoronoiCells, EveryVertexIsTheCentreOfAnEmptySphereThroughFourSeeds) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> unit(-3.0, 3.0);
   std::vector<Point> positions(2000);
@@ -152,17 +154,32 @@ TEST(RecomputeNearestFirst, AgreesWithTheContainersOnRandomSeeds) {
   for (Index s = 0; s < positions.size(); ++s) {
     if (positions[s].norm() < 2) cell_seeds.push_back(s);
   }
-  const std::vector<cells::RawCell> by_containers = cells::compute_voronoi_cells(positions, cell_seeds);
-  std::vector<cells::RawCell> alone(cell_seeds.size());
-  std::vector<std::size_t> all(cell_seeds.size());
-  std::iota(all.begin(), all.end(), std::size_t{0});
-  cells::recompute_nearest_first(positions, cell_seeds, all, alone);
-  for (std::size_t c = 0; c < cell_seeds.size(); ++c) {
-    std::vector<std::int32_t> a = by_containers[c].neighbours, b = alone[c].neighbours;
-    std::sort(a.begin(), a.end());
-    std::sort(b.begin(), b.end());
-    ASSERT_EQ(a, b) << "cell " << c;
-    ASSERT_EQ(by_containers[c].vertices.size(), alone[c].vertices.size()) << "cell " << c;
+  const std::vector<cells::RawCell> raw = cells::compute_voronoi_cells(positions, cell_seeds);
+  ASSERT_EQ(raw.size(), cell_seeds.size());
+  for (std::size_t c = 0; c < raw.size(); ++c) {
+    const Point& own = positions[cell_seeds[c]];
+    ASSERT_GE(raw[c].num_faces(), 4u);
+    for (const Point& v : raw[c].vertices) {
+      const double r = (v - own).norm();
+      std::size_t on_sphere = 0;
+      for (const Point& q : positions) {
+        const double d = (v - q).norm();
+        ASSERT_GE(d, r - 1e-9) << "cell " << c << ": a seed lies inside a vertex's empty sphere";
+        on_sphere += d < r + 1e-9;
+      }
+      EXPECT_GE(on_sphere, 4u) << "cell " << c;
+    }
+    for (const std::int32_t n : raw[c].neighbours) ASSERT_GE(n, 0) << "cell " << c << " keeps a wall";
+  }
+}
+
+TEST(ComputeVoronoiCells, ACellNoSeedBoundsIsAnError) {
+  const std::vector<Point> positions = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+  try {
+    cells::compute_voronoi_cells(positions, {0, 1});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("cell of seed 0 is not bounded by seeds"), std::string::npos) << e.what();
   }
 }
 

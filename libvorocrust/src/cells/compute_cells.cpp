@@ -215,13 +215,12 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
   arena.execute([&] {
     const cells::Frame frame = make_frame(seeds);
     std::vector<cells::RawCell> raw = cells::compute_voronoi_cells(frame.normalized, cell_seeds);
-    // Cells at odds with a neighbour after welding are computed again, nearest planes first,
-    // together with their neighbours (which side is wrong is not known). Where they still
-    // disagree, nearly cospherical seeds left a vertex split by more than the welding tolerance
-    // on one side only: the tolerance rises, to 1e-6 of the empty-sphere radius at most.
+    // Where cells disagree after welding, nearly cospherical seeds left a vertex split on one side
+    // only, or round-off a tiny feature: those cells and their neighbours are cut again, first in
+    // Voro++'s containers, then from bigger initial cubes, and the tolerance rises, to 1e-6 of the
+    // empty-sphere radius at most.
     constexpr double kTolerances[] = {1e-9, 1e-9, 1e-8, 1e-7, 1e-6};
     constexpr int kAttempts = static_cast<int>(std::size(kTolerances));
-    std::vector<char> alone(raw.size(), 0);  // computed again already: doing it twice changes nothing
     for (int attempt = 0;; ++attempt) {
       cells::WeldedVertices welded = cells::weld_vertices(raw, cell_seeds, cell_of_seed, frame, kTolerances[attempt]);
       Assembly assembly{seeds, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
@@ -240,21 +239,28 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
         fail_on_lowest(failed, cell_seeds, closed ? "and a neighbour see their common face differently after welding"
                                                   : "is not closed after welding its degenerate vertices");
       }
-      std::vector<std::size_t> again;
-      const auto recompute = [&](std::size_t c) {
-        if (!alone[c]) alone[c] = 1, again.push_back(c);
-      };
+      std::vector<char> again(raw.size(), 0);
       for (std::size_t c = 0; c < raw.size(); ++c) {
         if (!failed[c]) continue;
-        recompute(c);
+        again[c] = 1;
         for (std::int32_t n : raw[c].neighbours) {
           if (n >= 0 && cell_of_seed[static_cast<std::size_t>(n)] != kNoCell) {
-            recompute(static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)]));
+            again[static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)])] = 1;
           }
         }
       }
-      std::sort(again.begin(), again.end());
-      cells::recompute_nearest_first(frame.normalized, cell_seeds, again, raw);
+      std::vector<std::size_t> which;
+      for (std::size_t c = 0; c < raw.size(); ++c) {
+        if (again[c]) which.push_back(c);
+      }
+      if (attempt == 0) {
+        std::vector<Index> subset(which.size());
+        for (std::size_t k = 0; k < which.size(); ++k) subset[k] = cell_seeds[which[k]];
+        std::vector<cells::RawCell> redone = cells::compute_voronoi_cells_in_containers(frame.normalized, subset);
+        for (std::size_t k = 0; k < which.size(); ++k) raw[which[k]] = std::move(redone[k]);
+      } else {
+        cells::recompute_voronoi_cells(frame.normalized, cell_seeds, which, attempt, raw);
+      }
     }
     drop_unused_points(mesh);
     measure_cells(mesh);

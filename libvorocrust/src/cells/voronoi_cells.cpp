@@ -1,5 +1,6 @@
 #include "cells/voronoi_cells.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -15,6 +16,33 @@
 
 namespace vorocrust::cells {
 namespace {
+
+struct Scratch {
+  std::vector<double> xyz;
+  std::vector<int> faces, ids;
+  std::vector<std::uint32_t> near;
+  std::vector<double> distance2;
+};
+
+// A Voro++ cell of the seed at p as a RawCell.
+void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cell, Scratch& scratch) {
+  voro_cell.vertices(p.x(), p.y(), p.z(), scratch.xyz);
+  voro_cell.face_vertices(scratch.faces);
+  voro_cell.neighbors(scratch.ids);
+  const std::vector<double>& xyz = scratch.xyz;
+  const std::vector<int>& faces = scratch.faces;
+  cell.vertices.resize(xyz.size() / 3);
+  for (std::size_t v = 0; v < cell.vertices.size(); ++v) cell.vertices[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
+  cell.neighbours.assign(scratch.ids.begin(), scratch.ids.end());
+  cell.starts.clear();
+  cell.cycles.clear();
+  // Voro++ lists each face clockwise seen from outside: reverse it.
+  for (std::size_t at = 0; at < faces.size(); at += static_cast<std::size_t>(faces[at]) + 1) {
+    cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
+    for (int k = faces[at]; k >= 1; --k) cell.cycles.push_back(static_cast<std::uint32_t>(faces[at + static_cast<std::size_t>(k)]));
+  }
+  cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
+}
 
 // Cells per slab: enough for containers to pay off, few enough that two threads share the work
 // evenly; fixed, so that the result does not depend on the thread count.
@@ -57,31 +85,6 @@ struct SlabFailure {
     if (s < seed) seed = s, unbounded = is_unbounded;
   }
 };
-
-struct Scratch {
-  std::vector<double> xyz;
-  std::vector<int> faces, ids;
-};
-
-// A Voro++ cell of the seed at p as a RawCell.
-void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cell, Scratch& scratch) {
-  voro_cell.vertices(p.x(), p.y(), p.z(), scratch.xyz);
-  voro_cell.face_vertices(scratch.faces);
-  voro_cell.neighbors(scratch.ids);
-  const std::vector<double>& xyz = scratch.xyz;
-  const std::vector<int>& faces = scratch.faces;
-  cell.vertices.resize(xyz.size() / 3);
-  for (std::size_t v = 0; v < cell.vertices.size(); ++v) cell.vertices[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
-  cell.neighbours.assign(scratch.ids.begin(), scratch.ids.end());
-  cell.starts.clear();
-  cell.cycles.clear();
-  // Voro++ lists each face clockwise seen from outside: reverse it.
-  for (std::size_t at = 0; at < faces.size(); at += static_cast<std::size_t>(faces[at]) + 1) {
-    cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
-    for (int k = faces[at]; k >= 1; --k) cell.cycles.push_back(static_cast<std::uint32_t>(faces[at + static_cast<std::size_t>(k)]));
-  }
-  cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
-}
 
 // A Voro++ container's box and grid.
 struct Box {
@@ -189,9 +192,68 @@ class SlabWorker {
   Scratch scratch_;
 };
 
+using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
+
 }  // namespace
 
 std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds) {
+  std::vector<RawCell> cells(cell_seeds.size());
+  std::vector<std::size_t> all(cell_seeds.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  recompute_voronoi_cells(positions, cell_seeds, all, 0, cells);
+  return cells;
+}
+
+void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells) {
+  if (which.empty()) return;
+  const Cloud cloud{&positions};
+  StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  Eigen::AlignedBox3d bounds;
+  for (const Point& p : positions) bounds.extend(p);
+  // The initial cell: a cube about each seed bigger than all seeds, so that only a cell no seed
+  // bounds keeps one of its walls.
+  const double reach = (bounds.diagonal().norm() + 1) * std::pow(1.375, variant);
+  std::vector<Index> unbounded(which.size(), std::numeric_limits<Index>::max());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 256), [&](const auto& range) {
+    voro::voronoicell_neighbor cell;
+    Scratch scratch;
+    for (std::size_t k = range.begin(); k != range.end(); ++k) {
+      const std::size_t c = which[k];
+      const Index seed = cell_seeds[c];
+      const Point& p = positions[seed];
+      cell.init(-reach, reach, -reach, reach, -reach, reach);
+      std::size_t cut = 0;  // seeds cut so far, nearest first
+      for (std::size_t wanted = 32;; wanted *= 2) {
+        wanted = std::min(wanted, positions.size());
+        scratch.near.resize(wanted);
+        scratch.distance2.resize(wanted);
+        const std::size_t found = tree.knnSearch(p.data(), wanted, scratch.near.data(), scratch.distance2.data());
+        for (; cut < found; ++cut) {
+          const std::uint32_t other = scratch.near[cut];
+          if (other == seed) continue;
+          const Point d = positions[other] - p;
+          cell.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(other));
+        }
+        // A seed at distance d cuts the cell only if d / 2 is below its farthest vertex, whose
+        // doubled distance Voro++'s max_radius_squared gives.
+        if (found == positions.size() || scratch.distance2[found - 1] > cell.max_radius_squared()) break;
+      }
+      extract(cell, p, cells[c], scratch);
+      for (const std::int32_t n : cells[c].neighbours) {
+        if (n < 0) unbounded[k] = seed;
+      }
+    }
+  });
+  const Index worst = *std::min_element(unbounded.begin(), unbounded.end());
+  if (worst != std::numeric_limits<Index>::max()) {
+    throw Error(Error::Kind::InvalidGeometry,
+                "cell of seed " + std::to_string(worst) + " is not bounded by seeds: the seeds do not enclose the "
+                "materials (seeds of no material must surround them)");
+  }
+}
+
+std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds) {
   std::vector<RawCell> out(cell_seeds.size());
   if (cell_seeds.empty()) return out;
   const Layout layout = make_layout(positions);
@@ -227,41 +289,6 @@ std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, 
     throw Error(Error::Kind::InvalidGeometry, "Voro++ could not compute the cell of seed " + seed);
   }
   return out;
-}
-
-void recompute_nearest_first(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
-                             const std::vector<std::size_t>& which, std::vector<RawCell>& cells) {
-  using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
-  const Cloud cloud{&positions};
-  StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  Eigen::AlignedBox3d bounds;
-  for (const Point& p : positions) bounds.extend(p);
-  const double reach = bounds.diagonal().norm() + 1;
-  tbb::parallel_for(std::size_t{0}, which.size(), [&](std::size_t k) {
-    const Index seed = cell_seeds[which[k]];
-    const Point& p = positions[seed];
-    voro::voronoicell_neighbor cell;
-    cell.init(-reach, reach, -reach, reach, -reach, reach);
-    std::vector<std::uint32_t> near;
-    std::vector<double> distance2;
-    std::size_t cut = 0;  // seeds cut so far, nearest first
-    for (std::size_t wanted = 32;; wanted *= 2) {
-      wanted = std::min(wanted, positions.size());
-      near.resize(wanted);
-      distance2.resize(wanted);
-      const std::size_t found = tree.knnSearch(p.data(), wanted, near.data(), distance2.data());
-      for (; cut < found; ++cut) {
-        if (near[cut] == seed) continue;
-        const Point d = positions[near[cut]] - p;
-        cell.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(near[cut]));
-      }
-      // A seed at distance d cuts the cell only if d / 2 is below its farthest vertex, whose
-      // doubled distance Voro++'s max_radius_squared gives.
-      if (found == positions.size() || distance2[found - 1] > cell.max_radius_squared()) break;
-    }
-    Scratch scratch;
-    extract(cell, p, cells[which[k]], scratch);
-  });
 }
 
 }  // namespace vorocrust::cells

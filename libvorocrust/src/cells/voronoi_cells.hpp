@@ -1,23 +1,25 @@
 // cells/voronoi_cells.hpp — the raw Voronoi cells of chosen seeds, computed with Voro++.
 //
 // compute_voronoi_cells(positions, cell_seeds) returns, for each seed in `cell_seeds`
-// (in that order), its Voronoi cell among all `positions`, as Voro++ computes it: vertices
-// (absolute, in the frame of `positions`) and faces (outward cycles of vertex indices, each with
-// the seed across it). Degenerate vertices come as Voro++ resolves them, so two cells may
-// disagree on them by round-off or by a tiny edge: welding is the caller's job.
+// (in that order), its Voronoi cell among all `positions`: vertices (absolute, in the frame of
+// `positions`) and faces (outward cycles of vertex indices, each with the seed across it).
+// Degenerate vertices come as Voro++ resolves them, so two cells may disagree on them by
+// round-off or by a tiny edge: welding is the caller's job.
 //
-// The work is split into slabs of the seeds' bounding box along its longest axis, a fixed number
-// of seeds each, computed in parallel, one Voro++ container per slab holding the slab's seeds
-// and a margin of neighbouring seeds. A cell is kept only when the empty sphere of each of its
-// vertices lies inside the container's range along the axis (so no seed left out could cut it);
-// otherwise it is computed again with a wider margin. The slabs do not depend on the thread
-// count, nor does the result.
+// Each cell is cut alone from a cube bigger than all seeds by the bisector planes of the other
+// seeds, nearest first (a k-d tree gives them), until the next seed is farther than twice the
+// cell's farthest vertex. Voro++'s containers were the first choice, but their uniform grid
+// suits VoroCrust's seeds badly: thin layers of surface seeds, sparse interior seeds and outside
+// seeds spread over a box three times the model's crowd some blocks and empty others
+// (igl_bunny: 37 s in containers, 9 s nearest first; as fast on even seeds), and where many
+// seeds are nearly cospherical their block order could leave a cell missing a neighbour. Cells
+// are independent, so the result does not depend on the thread count.
 //
 // `positions` should be scaled so that seeds are about one unit apart: Voro++ decides
 // degeneracies with an absolute tolerance of 1e-11.
 //
-// Throws Error(InvalidGeometry) "cell of seed N is not bounded by seeds" when a cell reaches the
-// container's outer walls (the bounding box of all seeds, grown by one unit).
+// Throws Error(InvalidGeometry) "cell of seed N is not bounded by seeds" (the lowest such seed)
+// when a cell keeps a face of the initial cube.
 #pragma once
 
 #include <cstdint>
@@ -37,13 +39,18 @@ struct RawCell {
 
 std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds);
 
-// Computes cells[k] again for each k in `which`, each alone: the planes of the other seeds cut it
-// nearest first, with no container. Voro++'s containers cut in the order of their grid blocks,
-// and where many seeds are nearly cospherical (the rule at VoroCrust's surface seeds) that order
-// can, rarely, leave a cell that misses a neighbour; cutting nearest first does not, and is used
-// on the cells the assembly finds at odds with their neighbours. A cell that reaches the initial
-// box (bigger than all seeds) keeps a wall face (< 0) as a neighbour.
-void recompute_nearest_first(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
-                             const std::vector<std::size_t>& which, std::vector<RawCell>& cells);
+// The same cells from Voro++'s containers: slabs of a fixed number of cells along the longest
+// axis, one container each with a margin of neighbouring seeds, widened until every vertex's
+// empty sphere lies within it. Slower on VoroCrust's uneven seeds, but it cuts in another order:
+// the assembly's first fallback for cells at odds with their neighbours.
+std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point>& positions,
+                                                         const std::vector<Index>& cell_seeds);
+
+// Computes cells[k] again for each k in `which`, from an initial cube 1.375^variant times as
+// big. Variant 0 is what compute_voronoi_cells does. Where many seeds are nearly cospherical,
+// round-off in the cuts can leave two neighbours disagreeing on a tiny feature; cells cut from
+// another cube round otherwise, which is all the assembly needs to try again.
+void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells);
 
 }  // namespace vorocrust::cells
