@@ -8,7 +8,7 @@
 #include <cmath>
 #include <utility>
 
-#include "cells/union_find.hpp"
+#include "core/union_find.hpp"
 
 namespace vorocrust::cells {
 namespace {

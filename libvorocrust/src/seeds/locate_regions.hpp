@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/box_tree.hpp"
+#include "geometry/ray_cast.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust {
@@ -32,16 +32,8 @@ class RegionLocator {
   std::vector<std::string> region_names() const;
 
  private:
-  struct Hit {
-    double t;
-    Index face;
-    bool clear;  // far enough from the face's edges and not grazing
-    bool from_front;
-  };
-  Hit first_hit(const Point& p, const Point& direction) const;
-
   const SurfaceMesh& surface_;
-  geometry::BoxTree faces_;
+  geometry::RayCaster rays_;
 };
 
 }  // namespace vorocrust

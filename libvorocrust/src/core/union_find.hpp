@@ -1,4 +1,4 @@
-// cells/union_find.hpp — disjoint sets of 0..n-1 that several threads may unite at once.
+// core/union_find.hpp — disjoint sets of 0..n-1 that several threads may unite at once.
 //
 // unite(a, b) merges the sets of a and b; find(a) returns its set's root, which is always the
 // set's smallest element (a larger root is linked below a smaller one, by compare-and-swap), so
@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <memory>
 
-namespace vorocrust::cells {
+namespace vorocrust {
 
 class UnionFind {
  public:
@@ -44,4 +44,4 @@ class UnionFind {
   std::unique_ptr<std::atomic<std::uint32_t>[]> parent_;
 };
 
-}  // namespace vorocrust::cells
+}  // namespace vorocrust
