@@ -1,5 +1,6 @@
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -14,7 +15,7 @@ std::vector<std::filesystem::path> as_paths(const std::vector<std::string>& inpu
 }
 
 void print_text(const SurfaceMesh& mesh, const MeshInfo& info, const ValidationReport& validation,
-                const std::vector<std::string>& inputs) {
+                const std::optional<std::vector<RegionSummary>>& regions, const std::vector<std::string>& inputs) {
   std::printf("input              ");
   for (std::size_t i = 0; i < inputs.size(); ++i) std::printf("%s%s", i ? ", " : "", inputs[i].c_str());
   std::printf("\nvertices           %zu\nfaces              %zu\nedges              %zu\n", info.vertices, info.faces,
@@ -32,7 +33,15 @@ void print_text(const SurfaceMesh& mesh, const MeshInfo& info, const ValidationR
   std::printf("area               %g\n", info.area);
   std::printf("groups             %zu\n", info.groups.size());
   for (const GroupInfo& g : info.groups) std::printf("  %-24s %zu faces\n", g.name.c_str(), g.faces);
-  if (mesh.has_regions()) {
+  if (regions) {
+    std::printf("regions            %zu (label 0 outside)\n", regions->size());
+    for (std::size_t r = 0; r < regions->size(); ++r) {
+      const RegionSummary& s = (*regions)[r];
+      std::printf("  %zu %-22s %zu piece%s", r, s.name.c_str(), s.pieces, s.pieces == 1 ? "" : "s");
+      if (r > 0 || s.pieces > 1) std::printf(", volume %.10g", s.volume);
+      std::printf("\n");
+    }
+  } else if (mesh.has_regions()) {
     std::printf("regions            %zu:", mesh.region_names.size());
     for (const std::string& r : mesh.region_names) std::printf(" %s", r.c_str());
     std::printf("\n");
@@ -65,11 +74,22 @@ int run_info(const InfoArgs& args) {
   options.check_self_intersections = !args.skip_self_intersections;
   const ValidationReport validation = validate(mesh, options);
   const MeshInfo info = mesh_info(mesh);
+  // The regions of space, as meshing finds them, for an input meshing accepts.
+  std::optional<std::vector<RegionSummary>> regions;
+  std::optional<Error> region_error;
+  if (!validation.has_errors()) {
+    try {
+      regions = find_regions(mesh);
+    } catch (const Error& e) {
+      region_error = e;
+    }
+  }
   if (args.json) {
     std::printf("%s\n", info_json(args.inputs, mesh, info, validation).c_str());
   } else {
-    print_text(mesh, info, validation, args.inputs);
+    print_text(mesh, info, validation, regions, args.inputs);
   }
+  if (region_error) throw *region_error;
   if (validation.has_errors()) {
     std::size_t errors = 0;
     for (const Finding& f : validation.findings) errors += f.severity == Finding::Severity::Error;

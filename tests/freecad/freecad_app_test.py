@@ -14,9 +14,8 @@ import traceback
 # How far the runs go: "cells" meshes the volume with interior seeds; "surface" stops after the
 # surface, the volume files then holding the cells of the surface seeds alone. Both pass.
 STOP_AFTER = "cells"
-# One material per solid once the library meshes several (multi-material input); until then
-# every closed shell bounds the one material "inside".
-EXPECTED_MATERIALS = 1
+# One material per solid, named after it.
+EXPECTED_MATERIALS = ["Box", "Sphere"]
 
 WORK = os.environ["VOROCRUST_TEST_WORK"]
 SUMMARY = os.environ["VOROCRUST_TEST_SUMMARY"]
@@ -69,15 +68,16 @@ def main():
     check(result.Sources == [box, sphere], "sources %s" % result.Sources)
     surfaces = [o for o in result.Group if o.isDerivedFrom("Mesh::Feature")]
     seeds = [o for o in result.Group if o.isDerivedFrom("Points::Feature")]
-    check(len(surfaces) == EXPECTED_MATERIALS, "%d material surfaces" % len(surfaces))
+    check(sorted(o.Label for o in surfaces) == ["Voronoi surface: %s" % m for m in EXPECTED_MATERIALS],
+          "material surfaces %s" % [o.Label for o in surfaces])
     check(len(seeds) == 1, "%d seed objects" % len(seeds))
     check(seeds[0].Points.CountPoints == result.SeedCount, "seed points %d of %d" % (
         seeds[0].Points.CountPoints, result.SeedCount))
-    surface = surfaces[0].Mesh
-    check(surface.CountFacets == result.SurfaceTriangles, "surface facets")
-    check(surface.isSolid(), "the output surface is not closed")
-    check(surface.countComponents() == 2, "%d surface components, not the box and the sphere" % surface.countComponents())
-    close(surface.Volume, input_volume, 0.02, "volume inside the output surface")
+    check(sum(o.Mesh.CountFacets for o in surfaces) == result.SurfaceTriangles, "surface facets")
+    for o in surfaces:
+        check(o.Mesh.isSolid(), "the surface of %s is not closed" % o.Label)
+        check(o.Mesh.countComponents() == 1, "%d components in %s" % (o.Mesh.countComponents(), o.Label))
+    close(sum(o.Mesh.Volume for o in surfaces), input_volume, 0.02, "volume inside the output surfaces")
     check(result.TopologyMatches, "topology differs from the input's")
     # The volume mesh fills the solids up to the surface's distance from them.
     close(result.Volume, input_volume, 0.02, "sum of the cell volumes")
@@ -117,7 +117,7 @@ def main():
         check(f.read() == vtu, "exported mesh.vtu differs from the run's")
     saved = os.path.join(WORK, "voronoi.FCStd")
     name = result.Name
-    summary.update(out=out, cells=result.CellCount, volume=result.Volume, input_volume=input_volume,
+    summary.update(out=out, cells=result.CellCount, volume=result.Volume, input_volume=input_volume, materials=len(surfaces),
                    seeds=result.SeedCount, triangles=result.SurfaceTriangles, stop_after=STOP_AFTER)
     doc.saveAs(saved)
     App.closeDocument(doc.Name)

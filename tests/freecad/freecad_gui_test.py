@@ -124,9 +124,11 @@ def main():
     check(results(doc) == [result], "results %s" % results(doc))
     surfaces = [o for o in result.Group if o.isDerivedFrom("Mesh::Feature")]
     seeds = [o for o in result.Group if o.isDerivedFrom("Points::Feature")]
-    check(len(surfaces) == 1 and len(seeds) == 1, "children %s" % [o.Label for o in result.Group])
-    check(surfaces[0].ViewObject.Visibility and seeds[0].Points.CountPoints == result.SeedCount, "shown objects")
-    check(surfaces[0].Mesh.isSolid() and surfaces[0].Mesh.countComponents() == 2, "the output surface")
+    # One surface per material: the box and the sphere.
+    check(len(surfaces) == 2 and len(seeds) == 1, "children %s" % [o.Label for o in result.Group])
+    check(all(o.ViewObject.Visibility for o in surfaces) and seeds[0].Points.CountPoints == result.SeedCount,
+          "shown objects")
+    check(all(o.Mesh.isSolid() and o.Mesh.countComponents() == 1 for o in surfaces), "the output surfaces")
     check(abs(result.Volume - input_volume) < 0.02 * input_volume, "cells volume %g" % result.Volume)
     for name in ("mesh.vtu", "seeds.csv", "surface.ply", "case/constant/polyMesh/faces"):
         check(os.path.isfile(os.path.join(out, name)), "%s not written" % name)
@@ -166,7 +168,7 @@ def main():
     cancel.click()
     wait(lambda: not Gui.Control.activeDialog(), "the panel to close", timeout=60)
 
-    summary.update(out=out, cells=result.CellCount, volume=result.Volume, input_volume=input_volume,
+    summary.update(out=out, cells=result.CellCount, volume=result.Volume, input_volume=input_volume, materials=2,
                    seeds=result.SeedCount, triangles=result.SurfaceTriangles, stop_after=STOP_AFTER,
                    progress_updates=len(fractions))
     with open(SUMMARY, "w") as f:

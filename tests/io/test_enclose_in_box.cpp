@@ -5,6 +5,7 @@
 
 #include "core/surface_measures.hpp"
 #include "io/enclose_in_box.hpp"
+#include "vorocrust/regions.hpp"
 #include "vorocrust/error.hpp"
 
 namespace vorocrust {
@@ -49,7 +50,10 @@ TEST(EncloseInBox, AnUnlabelledSheetIsDomainOnBothSidesInsideAnOutwardBox) {
   ASSERT_EQ(boxed.num_faces(), 13u);
   EXPECT_EQ(boxed.num_vertices(), 11u);
   ASSERT_EQ(boxed.region_names, (std::vector<std::string>{"outside", "domain"}));
-  EXPECT_EQ(boxed.face_regions[0], (RegionPair{1, 1}));
+  EXPECT_EQ(boxed.face_regions[0], RegionPair{});  // left to the region stage
+  SurfaceMesh labelled = boxed;
+  label_regions(labelled);
+  EXPECT_EQ(labelled.face_regions[0], (RegionPair{1, 1}));
   for (std::size_t f = 1; f < 13; ++f) {
     EXPECT_EQ(boxed.face_regions[f], (RegionPair{1, 0})) << "face " << f;
     EXPECT_EQ(boxed.groups[boxed.face_group[f]].name, "box");

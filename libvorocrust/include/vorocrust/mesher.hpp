@@ -18,6 +18,7 @@
 #include "vorocrust/progress.hpp"
 #include "vorocrust/cell_quality.hpp"
 #include "vorocrust/quality.hpp"
+#include "vorocrust/regions.hpp"
 #include "vorocrust/seeds.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
@@ -131,6 +132,8 @@ struct FeatureCounts {
 
 struct MeshResult {
   std::vector<PhaseTiming> timings;
+  // The regions of space the input cuts out (label_regions), indexed by label: 0 outside.
+  std::vector<RegionSummary> regions;
   FeatureCounts features;
   // The surface the balls cover: the input, with the box's sides when it has one, after patch
   // smoothing (paper 2.2), which keeps every sharp feature exactly and moves only vertices

@@ -16,7 +16,9 @@
 
 namespace vorocrust {
 
-// One JSON object: counts, components, groups, regions, bounding box, shell volumes, findings.
+// One JSON object: counts, components, groups, regions, bounding box, shell volumes, findings;
+// for an input validation accepts, "region_details" (find_regions: per label its name, pieces,
+// sides and volume) or "region_error" (why the regions contradict the input's labels).
 std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh& mesh, const MeshInfo& info,
                       const ValidationReport& validation, int indent = 2);
 

@@ -12,6 +12,7 @@
 #include "vorocrust/quality.hpp"
 #include "vorocrust/quality_svg.hpp"
 #include "vorocrust/read_mesh.hpp"
+#include "vorocrust/regions.hpp"
 #include "vorocrust/report.hpp"
 #include "vorocrust/surface_from_arrays.hpp"
 #include "vorocrust/surface_mesh.hpp"

@@ -50,7 +50,7 @@ SurfaceMesh enclose_in_box(const SurfaceMesh& input, const geometry::Box& box) {
     }
   }
   SurfaceMesh out = input;
-  // Region 0 inside the box is the domain; an unlabelled input is all domain on both sides.
+  // Region 0 inside the box is the domain.
   std::int32_t domain = 0;
   if (out.has_regions()) {
     out.region_names.push_back("domain");
@@ -60,9 +60,11 @@ SurfaceMesh enclose_in_box(const SurfaceMesh& input, const geometry::Box& box) {
       if (pair.front == 0) pair.front = domain;
     }
   } else {
+    // The model's own sides are left for the region stage to read: a sheet has the domain on
+    // both sides, a closed solid inside the box a region of its own.
     out.region_names = {"outside", "domain"};
     domain = 1;
-    out.face_regions.assign(out.triangles.size(), RegionPair{domain, domain});
+    out.face_regions.assign(out.triangles.size(), RegionPair{});
   }
 
   const Index first = static_cast<Index>(out.vertices.size());

@@ -13,6 +13,7 @@
 #include "refinement/sizing_field.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/mesher.hpp"
+#include "vorocrust/regions.hpp"
 
 namespace vorocrust {
 
@@ -63,14 +64,15 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   MeshResult result;
   PhaseClock clock(result.timings);
   // The domain: the model, in its box when it has open sheets or the caller gives one.
-  std::optional<SurfaceMesh> boxed;
+  SurfaceMesh input = model;
   if (options.box) {
     const auto& b = *options.box;
-    boxed = enclose_in_box(model, geometry::Box{Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5])});
+    input = enclose_in_box(model, geometry::Box{Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5])});
   } else if (needs_box(model)) {
-    boxed = enclose_in_box(model, default_box(model));
+    input = enclose_in_box(model, default_box(model));
   }
-  const SurfaceMesh& input = boxed ? *boxed : model;
+  // The regions of space the surface cuts out, each side of each face labelled.
+  result.regions = clock("regions", [&] { return label_regions(input); });
   const double sharp_angle = options.sharp_angle_degrees * std::numbers::pi / 180;
   if (progress && !progress({"features", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
 

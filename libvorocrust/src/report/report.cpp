@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "vorocrust/error.hpp"
+#include "vorocrust/regions.hpp"
 #include "vorocrust/version.hpp"
 
 namespace vorocrust {
@@ -62,6 +63,17 @@ json info_object(const std::vector<std::string>& inputs, const SurfaceMesh& mesh
           {"shell_volumes", volumes},
           {"findings", findings},
           {"valid", !validation.has_errors()}};
+}
+
+// Per label: its name, how many connected pieces of space carry it, the faces' sides facing
+// them and the bounded pieces' volume.
+json regions_object(const std::vector<RegionSummary>& regions) {
+  json list = json::array();
+  for (std::size_t r = 0; r < regions.size(); ++r) {
+    list.push_back({{"label", r}, {"name", regions[r].name}, {"pieces", regions[r].pieces},
+                    {"sides", regions[r].sides}, {"volume", regions[r].volume}});
+  }
+  return list;
 }
 
 json topology_object(const SurfaceTopology& t) {
@@ -155,7 +167,15 @@ std::pair<json, double> timings_object(const std::vector<PhaseTiming>& timings) 
 
 std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh& mesh, const MeshInfo& info,
                       const ValidationReport& validation, int indent) {
-  return info_object(inputs, mesh, info, validation).dump(indent);
+  json doc = info_object(inputs, mesh, info, validation);
+  if (!validation.has_errors()) {
+    try {
+      doc["region_details"] = regions_object(find_regions(mesh));
+    } catch (const Error& e) {
+      doc["region_error"] = e.what();
+    }
+  }
+  return doc.dump(indent);
 }
 
 std::string run_report_json(const RunReport& report, int indent) {
@@ -183,6 +203,7 @@ std::string run_report_json(const RunReport& report, int indent) {
               {"timings", timings},
               {"total_seconds", total}};
   if (report.result) {
+    doc["regions"] = regions_object(report.result->regions);
     const FeatureCounts& f = report.result->features;
     const RefinementStats& r = report.result->refinement;
     doc["features"] = {{"sharp_edges", f.sharp_edges}, {"corners", f.corners},  {"creases", f.creases},
