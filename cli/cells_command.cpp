@@ -8,6 +8,7 @@
 #include <iterator>
 
 #include "exit_codes.hpp"
+#include "volume_outputs.hpp"
 #include "vorocrust/vorocrust.hpp"
 
 namespace vorocrust::cli {
@@ -28,7 +29,8 @@ int run_cells(const CellsArgs& args) {
   CellsOptions options;
   options.materials = args.materials;
   options.threads = args.threads;
-  const VoronoiMesh mesh = compute_cells(seeds, options);
+  VoronoiMesh mesh = compute_cells(seeds, options);
+  mesh.region_names = run_report_regions(fs::path(args.seeds_file).parent_path() / "report.json");
   const double cells_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
   CellQualityOptions quality_options;
@@ -43,15 +45,11 @@ int run_cells(const CellsArgs& args) {
                 {.file = args.output_dir});
   }
   const fs::path out(args.output_dir);
-  const auto wants = [&](const char* format) {
-    return std::find(args.formats.begin(), args.formats.end(), format) != args.formats.end();
-  };
   // The seeds go along (unless they are read from there), so that the folder holds the mesh in
   // its compact form and `vorocrust quality OUTDIR` finds them.
   std::error_code same_ec;
   if (!fs::equivalent(args.seeds_file, out / "seeds.csv", same_ec)) write_seeds_csv(seeds, out / "seeds.csv");
-  if (wants("vtu")) write_vtu(mesh, out / "mesh.vtu");
-  if (wants("openfoam")) write_openfoam_case(mesh, out / "case");
+  write_volume_mesh(mesh, out, args.formats);
   write_histogram_svg(out / "quality.svg", "cell quality: " + args.seeds_file, {cell_quality_panel(quality)});
   CellsReport report;
   report.command = args.command_line;
@@ -73,8 +71,7 @@ int run_cells(const CellsArgs& args) {
     std::printf("aspect ratio %.4g min, %.4g mean, %.4g max (cell %zu, seed %u); %zu cells above %.4g; in %.3f s\n",
                 quality.min_aspect_ratio, quality.mean_aspect_ratio, quality.max_aspect_ratio, quality.worst_cell,
                 quality.worst_seed, quality.aspect_ratio_above_high, quality.histogram_high, quality_seconds);
-    if (wants("vtu")) std::printf("wrote %s\n", (out / "mesh.vtu").c_str());
-    if (wants("openfoam")) std::printf("wrote %s/ (check it with: checkMesh -case %s)\n", (out / "case").c_str(), (out / "case").c_str());
+    print_volume_outputs(out, args.formats, stdout);
     std::printf("wrote %s, %s and %s\n", (out / "seeds.csv").c_str(), (out / "report.json").c_str(),
                 (out / "quality.svg").c_str());
   }

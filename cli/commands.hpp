@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "vorocrust/mesher.hpp"
+#include "vorocrust/write_volume_mesh.hpp"
 
 namespace vorocrust::cli {
 
@@ -24,7 +25,7 @@ struct MeshArgs {
   std::string stop_after;  // "" (everything), "balls" or "surface"
   std::string interior = "random";
   std::vector<double> box;  // empty, or xmin ymin zmin xmax ymax zmax
-  std::vector<std::string> formats{"vtu", "openfoam"};
+  std::vector<std::string> formats = volume_format_names();
   std::vector<std::string> command_line;
 };
 

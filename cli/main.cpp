@@ -16,6 +16,10 @@ namespace {
 using namespace vorocrust;
 using namespace vorocrust::cli;
 
+constexpr const char* kVolumeFormatsHelp =
+    "Volume mesh outputs, comma-separated: vtu (mesh.vtu), openfoam (case/), tough (MESH), pflotran (pflotran/: "
+    "mesh.uge, a cell list per material, boundary connections per patch)";
+
 int report_error(const Error& e) {
   std::fprintf(stderr, "vorocrust: %s: %s\n", to_string(e.kind()), e.what());
   return exit_code_for(e.kind());
@@ -75,10 +79,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   mesh_cmd->add_option("--cvt-iterations", mesh.options.cvt_iterations, "Lloyd iterations of --interior cvt")
       ->capture_default_str();
-  mesh_cmd->add_option("--format", mesh.formats,
-                       "Volume mesh outputs, comma-separated: vtu (mesh.vtu), openfoam (case/)")
+  mesh_cmd->add_option("--format", mesh.formats, kVolumeFormatsHelp)
       ->delimiter(',')
-      ->check(CLI::IsMember({"vtu", "openfoam"}))
+      ->check(CLI::IsMember(volume_format_names()))
       ->capture_default_str();
   mesh_cmd->add_option("--stop-after", mesh.stop_after, "Stop after a stage and write its output: 'balls' (balls.csv, balls.vtk) or 'surface' "
                        "(also seeds.csv, surface.obj, surface.ply)")
@@ -129,9 +132,9 @@ int main(int argc, char** argv) {
   cells_cmd->add_option("SEEDS", cells.seeds_file, "Seeds as written by `vorocrust mesh`: x,y,z,label,radius,kind")
       ->required();
   cells_cmd->add_option("-o,--output", cells.output_dir, "Output folder (created if missing)")->required();
-  cells_cmd->add_option("--format", cells.formats, "Outputs, comma-separated: vtu (mesh.vtu), openfoam (case/)")
+  cells_cmd->add_option("--format", cells.formats, kVolumeFormatsHelp)
       ->delimiter(',')
-      ->check(CLI::IsMember({"vtu", "openfoam"}))
+      ->check(CLI::IsMember(volume_format_names()))
       ->capture_default_str();
   cells_cmd->add_option("--materials", cells.materials,
                         "Labels that get cells, comma-separated (default: every label > 0; 0 is outside)")

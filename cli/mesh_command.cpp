@@ -6,6 +6,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "progress_display.hpp"
+#include "volume_outputs.hpp"
 #include "vorocrust/vorocrust.hpp"
 
 namespace vorocrust::cli {
@@ -90,15 +91,10 @@ int run_mesh(const MeshArgs& args) {
     write_or_remove(surface, "surface.obj", [&](const auto& path) { write_mesh(result->surface, path); });
     write_or_remove(surface, "surface.ply", [&](const auto& path) { write_mesh(result->surface, path); });
     const bool cells = options.stop_after >= Stage::Cells;
-    const auto wants = [&](const char* format) {
-      return cells && std::find(args.formats.begin(), args.formats.end(), format) != args.formats.end();
-    };
-    write_or_remove(wants("vtu"), "mesh.vtu", [&](const auto& path) { write_vtu(result->cells, path); });
-    if (wants("openfoam")) {
-      write_openfoam_case(result->cells, out / "case");
+    if (cells) {
+      write_volume_mesh(result->cells, out, args.formats);
     } else {
-      std::error_code ignored;
-      std::filesystem::remove_all(out / "case", ignored);
+      remove_volume_outputs(out);
     }
     write_or_remove(surface, "quality.svg", [&](const auto& path) {
       std::vector<HistogramPanel> panels = {surface_quality_panel(*result->surface_quality)};
@@ -132,11 +128,7 @@ int run_mesh(const MeshArgs& args) {
       const CellQuality& q = *result->cell_quality;
       std::fprintf(stderr, "vorocrust: cell aspect ratio %.3g mean, %.3g max (seed %u); %zu cells above %.3g\n",
                    q.mean_aspect_ratio, q.max_aspect_ratio, q.worst_seed, q.aspect_ratio_above_high, q.histogram_high);
-      if (wants("vtu")) std::fprintf(stderr, "vorocrust: wrote %s (open it in ParaView)\n", (out / "mesh.vtu").c_str());
-      if (wants("openfoam")) {
-        std::fprintf(stderr, "vorocrust: wrote %s/ (check it with: checkMesh -case %s)\n", (out / "case").c_str(),
-                     (out / "case").c_str());
-      }
+      print_volume_outputs(out, args.formats);
     }
     return finish("ok", "", kOk);
   } catch (const Error& e) {

@@ -31,6 +31,8 @@ const char* const kCvtIterations = "cvtIterations";
 const char* const kOutputFolder = "outputFolder";
 const char* const kWriteVtu = "writeVtu";
 const char* const kWriteOpenFoam = "writeOpenFoam";
+const char* const kWriteTough = "writeTough";
+const char* const kWritePflotran = "writePflotran";
 const char* const kWriteSeeds = "writeSeeds";
 const char* const kWriteSurface = "writeSurface";
 const char* const kAllVisibleLayers = "allVisibleLayers";
@@ -49,13 +51,12 @@ QStringList interior_mode_names() {
 // The files the Voronoi Mesh filter writes into its output folder.
 struct OutputRequest {
   std::filesystem::path folder;
-  bool vtu = true;       // mesh.vtu: polyhedral cells for ParaView
-  bool openfoam = true;  // case/: an OpenFOAM case
+  std::vector<std::string> volume;  // the volume formats (write_volume_mesh.hpp): vtu, openfoam, ...
   bool seeds = true;     // seeds.csv: the seeds, from which the whole mesh can be rebuilt
   bool surface = true;   // surface.obj and surface.ply: the conforming surface
 
-  bool volume() const { return vtu || openfoam; }
-  bool any() const { return volume() || seeds || surface; }
+  bool volume_wanted() const { return !volume.empty(); }
+  bool any() const { return volume_wanted() || seeds || surface; }
 };
 
 struct VoronoiRequest {
@@ -101,12 +102,14 @@ vorocrust::MeshOptions mesh_options(const RichParameterList& parameters, vorocru
 // seeds (layers, seeds.csv, surface.*) are all there from Stage::Surface on.
 VoronoiRequest voronoi_request(const RichParameterList& parameters) {
   VoronoiRequest request;
-  request.output.vtu = parameters.getBool(kWriteVtu);
-  request.output.openfoam = parameters.getBool(kWriteOpenFoam);
+  for (const auto& [parameter, format] : {std::pair{kWriteVtu, "vtu"}, std::pair{kWriteOpenFoam, "openfoam"},
+                                           std::pair{kWriteTough, "tough"}, std::pair{kWritePflotran, "pflotran"}}) {
+    if (parameters.getBool(parameter)) request.output.volume.emplace_back(format);
+  }
   request.output.seeds = parameters.getBool(kWriteSeeds);
   request.output.surface = parameters.getBool(kWriteSurface);
   request.options =
-      mesh_options(parameters, request.output.volume() ? vorocrust::Stage::Cells : vorocrust::Stage::Surface);
+      mesh_options(parameters, request.output.volume_wanted() ? vorocrust::Stage::Cells : vorocrust::Stage::Surface);
   const int interior = parameters.getEnum(kInterior);
   if (interior < 0 || interior >= int(kInteriorModes.size())) {
     throw Error(Error::Kind::Usage, "unknown interior mode " + std::to_string(interior));
@@ -142,8 +145,10 @@ QStringList write_outputs(const vorocrust::MeshResult& result, const OutputReque
     writer(output.folder / name);
     written << name;
   };
-  write(output.vtu, "mesh.vtu", [&](const auto& path) { vorocrust::write_vtu(result.cells, path); });
-  write(output.openfoam, "case", [&](const auto& path) { vorocrust::write_openfoam_case(result.cells, path); });
+  for (const vorocrust::VolumeFormat& f : vorocrust::volume_formats()) {
+    const bool wanted = std::find(output.volume.begin(), output.volume.end(), f.name) != output.volume.end();
+    write(wanted, f.output, [&](const auto&) { vorocrust::write_volume_format(result.cells, output.folder, f.name); });
+  }
   write(output.seeds, "seeds.csv", [&](const auto& path) { vorocrust::write_seeds_csv(result.seeds, path); });
   write(output.surface, "surface.obj", [&](const auto& path) { vorocrust::write_mesh(result.surface, path); });
   write(output.surface, "surface.ply", [&](const auto& path) { vorocrust::write_mesh(result.surface, path); });
@@ -233,12 +238,13 @@ QString FilterVoroCrustPlugin::filterInfo(FilterIDType filter) const {
       return "Meshes the volume the current mesh bounds (or the volumes of all visible layers, each a "
              "material) into conforming Voronoi cells with VoroCrust: true Voronoi cells, convex, that "
              "conform to the surface without clipping. Writes the volume mesh into the output folder "
-             "(mesh.vtu for ParaView, an OpenFOAM case, seeds.csv, the conforming surface) and adds layers "
+             "(mesh.vtu for ParaView, an OpenFOAM case, TOUGH's MESH, a PFLOTRAN grid, seeds.csv, the "
+             "conforming surface) and adds layers "
              "for the conforming surface (faces coloured by the region pair they separate, which the face "
              "attributes <i>back_region</i> and <i>front_region</i> hold, and the triangle quality as face "
              "quality for MeshLab's histogram) and the seeds (label, kind and radius as vertex attributes, "
              "the radius also as vertex quality, coloured by label).<br><br>The cells are computed only when "
-             "mesh.vtu or the OpenFOAM case is asked for: the surface and the seeds alone take the library "
+             "a volume format is asked for: the surface and the seeds alone take the library "
              "as far as its surface stage." +
              paper;
   }
@@ -273,7 +279,13 @@ void FilterVoroCrustPlugin::initParameterSet(QAction* action, MeshDocument& md, 
                                "A VTK unstructured grid of polyhedral cells. Needs the cells: with neither this nor "
                                "the OpenFOAM case, the run stops after the surface."));
   parameters.addParam(RichBool(kWriteOpenFoam, true, "Write an OpenFOAM case",
-                               "case/ with constant/polyMesh, ready for checkMesh. Needs the cells."));
+                               "case/ with constant/polyMesh, ready for checkMesh: a cell zone per material, a "
+                               "patch per boundary region pair, a face zone per interface. Needs the cells."));
+  parameters.addParam(RichBool(kWriteTough, true, "Write a TOUGH MESH file",
+                               "MESH with the ELEME and CONNE blocks TOUGH2 and TOUGH3 read. Needs the cells."));
+  parameters.addParam(RichBool(kWritePflotran, true, "Write a PFLOTRAN grid",
+                               "pflotran/ with mesh.uge (explicit unstructured grid), a cell list per material "
+                               "and boundary connections per patch. Needs the cells."));
   parameters.addParam(
       RichBool(kWriteSeeds, true, "Write seeds.csv", "The seeds with label and radius: they define the whole mesh."));
   parameters.addParam(

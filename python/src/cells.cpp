@@ -107,6 +107,19 @@ Made by compute_cells() or a mesh() run.
       .def_property_readonly(
           "centroids", [](const Cells& c) { return point_rows(c.mesh->cells, [](const VoronoiCell& x) { return x.centroid; }); },
           "The centroid of each cell, float64, c x 3.")
+      .def_property_readonly(
+          "sites", [](const Cells& c) { return point_rows(c.mesh->cells, [](const VoronoiCell& x) { return x.site; }); },
+          "The seed of each cell, float64, c x 3: the node the links between neighbouring cells cross their faces "
+          "at right angles from.")
+      .def_property(
+          "region_names", [](const Cells& c) { return c.mesh->region_names; },
+          [](Cells& c, const std::vector<std::string>& names) {
+            auto named = std::make_shared<VoronoiMesh>(*c.mesh);
+            named->region_names = names;
+            c.mesh = std::move(named);
+          },
+          "The regions' names by label, as the writers use them (empty: outside and material<N>); settable, for "
+          "cells built from seeds alone.")
       .def_property_readonly("num_points", [](const Cells& c) { return c.mesh->points.size(); }, "Number of points.")
       .def_property_readonly("num_faces", [](const Cells& c) { return c.mesh->faces.size(); }, "Number of faces.")
       .def_property_readonly("num_cells", [](const Cells& c) { return c.mesh->cells.size(); }, "Number of cells.")
@@ -124,12 +137,15 @@ Made by compute_cells() or a mesh() run.
 
   m.def(
       "compute_cells",
-      [](const py::object& seeds, const std::optional<std::vector<std::int32_t>>& materials, int threads) {
+      [](const py::object& seeds, const std::optional<std::vector<std::int32_t>>& materials, int threads,
+         const std::optional<std::vector<std::string>>& region_names) {
         std::shared_ptr<const std::vector<Seed>> input;
+        std::vector<std::string> names;
         if (is_path(seeds)) {
           const std::filesystem::path p = to_path(seeds);
           py::gil_scoped_release release;
           input = std::make_shared<const std::vector<Seed>>(read_seeds_csv(p));
+          names = run_report_regions(p.parent_path() / "report.json");
         } else {
           input = seeds.cast<const Seeds&>().seeds;
         }
@@ -140,15 +156,20 @@ Made by compute_cells() or a mesh() run.
         std::shared_ptr<const VoronoiMesh> mesh;
         {
           py::gil_scoped_release release;
-          mesh = std::make_shared<const VoronoiMesh>(compute_cells(*input, options));
+          VoronoiMesh cells = compute_cells(*input, options);
+          cells.region_names = region_names ? *region_names : std::move(names);
+          mesh = std::make_shared<const VoronoiMesh>(std::move(cells));
         }
         return make_cells(std::move(mesh));
       },
-      py::arg("seeds"), py::arg("materials") = py::none(), py::arg("threads") = 0, R"doc(
+      py::arg("seeds"), py::arg("materials") = py::none(), py::arg("threads") = 0,
+      py::arg("region_names") = py::none(), R"doc(
 The conforming Voronoi mesh of a seed set, as `vorocrust cells SEEDS` builds it.
 
 `seeds` is a Seeds or the path of a seeds.csv; `materials` the labels that get cells (default:
-every label > 0); `threads` 0 for all cores (the result does not depend on it). Raises
+every label > 0); `threads` 0 for all cores (the result does not depend on it); `region_names`
+the regions' names by label for the writers (default: those of the report.json beside a
+seeds.csv, as `vorocrust cells` reads them, else "outside" and "material<N>"). Raises
 InvalidGeometryError when no seed is a material or a material cell is not bounded by other
 seeds (outside seeds must surround the materials).
 )doc");
@@ -157,6 +178,18 @@ seeds (outside seeds must surround the materials).
       m, "write_vtu", "cells", "path", [](const Cells& c, const auto& p) { write_vtu(*c.mesh, p); }, R"doc(
 Writes the cells as a VTK XML unstructured grid (mesh.vtu: polyhedron cells, cell data
 material, seed, volume) that VTK 9.1 and ParaView read; atomically.
+)doc");
+  def_writer<Cells>(
+      m, "write_tough", "cells", "path", [](const Cells& c, const auto& p) { write_tough_mesh(*c.mesh, p); }, R"doc(
+Writes the cells as a TOUGH MESH file (ELEME: name, material, volume, the seed as node; CONNE:
+the two cells, half the seed link on each side, face area, gravity cosine), atomically.
+)doc");
+  def_writer<Cells>(
+      m, "write_pflotran", "cells", "folder", [](const Cells& c, const auto& p) { write_pflotran(*c.mesh, p); },
+      R"doc(
+Writes the cells as PFLOTRAN's explicit unstructured grid into a folder: mesh.uge (CELLS and
+CONNECTIONS), a cell-id list <material>.txt per material and boundary connections <patch>.ex per
+boundary patch. Each file is written atomically.
 )doc");
   def_writer<Cells>(
       m, "write_openfoam", "cells", "case_dir", [](const Cells& c, const auto& p) { write_openfoam_case(*c.mesh, p); },

@@ -42,8 +42,10 @@ from ._vorocrust import (  # noqa: F401  (the public interface)
     validate,
     write_balls,
     write_openfoam,
+    write_pflotran,
     write_seeds,
     write_surface,
+    write_tough,
     write_vtu,
 )
 from . import _vorocrust
@@ -52,7 +54,8 @@ __all__ = [
     "Balls", "Cancelled", "Cells", "Error", "InternalError", "InvalidGeometryError", "MeshResult",
     "NotYetImplementedError", "OutputError", "Seeds", "Surface", "UnreadableInputError", "UsageError",
     "__version__", "DEFAULT_OPTIONS", "compute_cells", "info", "measure_surface_quality", "merge_surfaces", "mesh",
-    "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_outputs",
+    "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_outputs", "write_pflotran",
+    "write_tough",
     "write_files", "write_seeds", "write_surface", "write_vtu", "OUTPUT_FORMATS", "VOLUME_FORMATS",
     "INTERIOR_MODES", "STAGES",
 ]
@@ -73,6 +76,8 @@ OUTPUT_FORMATS = {
     "report": ("report.json",),
     "vtu": ("mesh.vtu",),
     "openfoam": ("case",),
+    "tough": ("MESH",),
+    "pflotran": ("pflotran",),
 }
 
 
@@ -122,11 +127,11 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_O
 
 
 #: The formats written from the cells (the volume mesh), by name in OUTPUT_FORMATS.
-VOLUME_FORMATS = ("vtu", "openfoam")
+VOLUME_FORMATS = ("vtu", "openfoam", "tough", "pflotran")
 
 # The part of a run each format is written from.
 _FORMAT_PARTS = {"balls": "balls", "seeds": "seeds", "obj": "surface", "ply": "surface", "svg": "run",
-                 "report": "run", "vtu": "cells", "openfoam": "cells"}
+                 "report": "run", "vtu": "cells", "openfoam": "cells", "tough": "cells", "pflotran": "cells"}
 
 
 def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=None, cells=None):
@@ -135,8 +140,8 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
     elsewhere (seeds read back from a seeds.csv, cells from compute_cells()).
 
     formats: names from OUTPUT_FORMATS, each needing its part: "balls" balls, "seeds" seeds,
-        "obj" and "ply" surface, "svg" and "report" run (a MeshResult), "vtu" and "openfoam"
-        cells. A format whose part is missing raises UsageError before anything is written.
+        "obj" and "ply" surface, "svg" and "report" run (a MeshResult), "vtu", "openfoam",
+        "tough" and "pflotran" cells. A format whose part is missing raises UsageError before anything is written.
 
     Every file is written atomically. Returns the paths written, in the order of `formats`.
     """
@@ -158,6 +163,8 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
         "report": lambda: run.write_report(_at(folder, "report.json")),
         "vtu": lambda: write_vtu(cells, _at(folder, "mesh.vtu")),
         "openfoam": lambda: write_openfoam(cells, _at(folder, "case")),
+        "tough": lambda: write_tough(cells, _at(folder, "MESH")),
+        "pflotran": lambda: write_pflotran(cells, _at(folder, "pflotran")),
     }
     written = []
     for name in formats:
@@ -170,10 +177,10 @@ def write_outputs(result, folder, formats=None, cells=None):
     """Writes a run's results into `folder` (created when missing), as `vorocrust mesh` does.
 
     formats: names from OUTPUT_FORMATS ("balls", "seeds", "obj", "ply", "svg", "report",
-        "vtu", "openfoam"); None for every one the run has the parts for. Asking for a part the
+        "vtu", "openfoam", "tough", "pflotran"); None for every one the run has the parts for. Asking for a part the
         run did not make (cells after stop_after="surface") raises UsageError and writes
         nothing.
-    cells: the Cells to write "vtu" and "openfoam" from, instead of result.cells: e.g.
+    cells: the Cells to write the volume formats from, instead of result.cells: e.g.
         compute_cells(result.seeds) for a run that stopped after the surface.
 
     Every file is written atomically (a temporary file renamed into place). Returns the paths

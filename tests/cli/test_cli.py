@@ -155,8 +155,8 @@ class Mesh(unittest.TestCase):
             self.assertEqual(report["input"]["faces"], 446)
             self.assertEqual([t["phase"] for t in report["timings"]][:2], ["reading", "validating"])
             self.assertEqual(sorted(os.listdir(out)),
-                             ["balls.csv", "balls.vtk", "case", "mesh.vtu", "quality.svg", "report.json", "seeds.csv",
-                              "surface.obj", "surface.ply"])
+                             ["MESH", "balls.csv", "balls.vtk", "case", "mesh.vtu", "pflotran", "quality.svg",
+                              "report.json", "seeds.csv", "surface.obj", "surface.ply"])
             self.assertEqual(report["features"]["corners"], 12)
             self.assertEqual(report["refinement"]["balls"]["corner"], 12)
             self.assertEqual(report["slivers"]["half_covered_left"], 0)

@@ -149,5 +149,48 @@ TEST(OpenFoamCase, FollowsOpenFoamsOrderingRules) {
   EXPECT_NE(zones.find("material2\n{\n    type cellZone;"), std::string::npos);
 }
 
+TEST(OpenFoamCase, NamesZonesAndPatchesAfterTheRegionsAndListsTheInterfaceAsAFaceZone) {
+  const auto seeds = test::lattice_seeds(8, 0.3, test::split_box_region(1.5, 5.5, 3.5), 5);
+  VoronoiMesh mesh = compute_cells(seeds);
+  mesh.region_names = {"air", "dry sand", "rock"};
+  const test::TempDir dir("openfoam-zones");
+  write_openfoam_case(mesh, dir.path());
+  const fs::path poly = dir / "constant/polyMesh";
+  const auto list = patches(poly / "boundary");
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_EQ(list[0].name, "dry_sand_to_air");
+  EXPECT_EQ(list[1].name, "rock_to_air");
+  const std::string cell_zones = body(poly / "cellZones");
+  EXPECT_NE(cell_zones.find("dry_sand\n{\n    type cellZone;"), std::string::npos);
+
+  // The face zone: the internal faces between the two materials, flipped where the owner is rock.
+  const auto owner = labels(poly / "owner");
+  const auto neighbour = labels(poly / "neighbour");
+  std::istringstream in(body(poly / "faceZones"));
+  std::string word, name;
+  std::size_t zones = 0, n = 0, m = 0;
+  char paren = 0;
+  in >> zones >> paren >> name >> word >> word >> word;  // 1 ( name { type faceZone;
+  ASSERT_EQ(zones, 1u);
+  EXPECT_EQ(name, "dry_sand_to_rock");
+  in >> word >> word >> n >> paren;  // faceLabels List<label> N (
+  std::vector<long> faces(n);
+  for (long& f : faces) in >> f;
+  in >> paren >> paren >> word >> word >> m >> paren;  // ) ; flipMap List<bool> N (
+  ASSERT_EQ(m, n);
+  std::size_t expected = 0;
+  for (std::size_t f = 0; f < neighbour.size(); ++f) {
+    expected += mesh.cells[owner[f]].region != mesh.cells[neighbour[f]].region;
+  }
+  EXPECT_EQ(n, expected);
+  EXPECT_GT(n, 0u);
+  for (long f : faces) {
+    int flip = -1;
+    in >> flip;
+    EXPECT_NE(mesh.cells[owner[f]].region, mesh.cells[neighbour[f]].region);
+    EXPECT_EQ(flip, mesh.cells[owner[f]].region == 2 ? 1 : 0) << f;
+  }
+}
+
 }  // namespace
 }  // namespace vorocrust

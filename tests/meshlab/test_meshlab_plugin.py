@@ -244,7 +244,8 @@ def balls_script(path, seed=SEED, lipschitz=0.25):
 def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20):
     return script(path, "VoroCrust Voronoi Mesh", lipschitz=0.25, sharpAngle=30.0, maxSize=("abs", 0.0), seed=seed,
                   interior=("enum", 0), cvtIterations=cvt_iterations, outputFolder=folder, writeVtu=vtu,
-                  writeOpenFoam=openfoam, writeSeeds=True, writeSurface=True, allVisibleLayers=False)
+                  writeOpenFoam=openfoam, writeTough=openfoam, writePflotran=openfoam, writeSeeds=True,
+                  writeSurface=True, allVisibleLayers=False)
 
 
 class MeshLabCase(unittest.TestCase):

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "vorocrust/seeds.hpp"
@@ -48,6 +49,7 @@ struct VoronoiFace {
 
 struct VoronoiCell {
   Index seed = 0;
+  Point site = Point::Zero();  // the seed's position: the node simulators put the cell's values at
   std::int32_t region = 0;
   std::vector<Index> faces;  // into VoronoiMesh::faces
   double volume = 0;
@@ -58,9 +60,25 @@ struct VoronoiMesh {
   std::vector<Point> points;
   std::vector<VoronoiFace> faces;
   std::vector<VoronoiCell> cells;
+  // The regions' names by label, as the input named them (vorocrust/regions.hpp); empty when the
+  // seeds came without names, and the writers then say "outside" (0) and "material<N>".
+  std::vector<std::string> region_names;
 };
 
 VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options = {});
+
+// A face's area, its unit normal (from owner to the other side) and its centroid, from the
+// triangles fanned about its vertex mean, as the cells' volumes are measured.
+struct FaceGeometry {
+  double area = 0;
+  Point normal = Point::Zero();
+  Point centroid = Point::Zero();
+};
+FaceGeometry face_geometry(const VoronoiMesh& mesh, std::size_t face);
+
+// The name of region `label`: mesh.region_names[label] where given, else "outside" for 0 and
+// "material<N>" for N.
+std::string region_name(const VoronoiMesh& mesh, std::int32_t label);
 
 // The figures every summary of a mesh gives: faces with a cell on both sides, and the sum of the
 // cells' volumes.

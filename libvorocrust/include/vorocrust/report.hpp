@@ -43,6 +43,10 @@ std::string run_report_json(const RunReport& report, int indent = 2);
 // when it is missing, is not JSON or has no list of input paths.
 std::vector<std::string> run_report_inputs(const std::filesystem::path& report_json);
 
+// The region names of a mesh run's OUTDIR/report.json ("surface": {"regions"}), by label; empty
+// when the file is missing, unreadable or names none (the seeds then go unnamed).
+std::vector<std::string> run_report_regions(const std::filesystem::path& report_json);
+
 // The surface-quality figures (quality.hpp) as one JSON object, every key saying its unit:
 // angles in degrees, shares in percent, distances in the input's units and in percent of its
 // bounding-box diagonal.

@@ -21,4 +21,7 @@
 #include "vorocrust/version.hpp"
 #include "vorocrust/write_mesh.hpp"
 #include "vorocrust/write_openfoam.hpp"
+#include "vorocrust/write_pflotran.hpp"
+#include "vorocrust/write_tough.hpp"
+#include "vorocrust/write_volume_mesh.hpp"
 #include "vorocrust/write_vtu.hpp"

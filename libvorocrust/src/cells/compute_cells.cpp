@@ -113,6 +113,7 @@ struct Assembly {
       const CellFaces& mine = faces[c];
       VoronoiCell& cell = mesh.cells[c];
       cell.seed = cell_seeds[c];
+      cell.site = seeds[cell.seed].position;
       cell.region = seeds[cell.seed].region;
       std::size_t next = first_face[c];
       for (std::size_t f = 0; f < mine.num_faces(); ++f) {
@@ -271,6 +272,33 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
 std::size_t count_interior_faces(const VoronoiMesh& mesh) {
   return static_cast<std::size_t>(
       std::count_if(mesh.faces.begin(), mesh.faces.end(), [](const VoronoiFace& f) { return f.neighbour != kNoCell; }));
+}
+
+FaceGeometry face_geometry(const VoronoiMesh& mesh, std::size_t face) {
+  const std::vector<Index>& polygon = mesh.faces[face].points;
+  Point centre = Point::Zero();
+  for (Index p : polygon) centre += mesh.points[p];
+  centre /= static_cast<double>(polygon.size());
+  Point area = Point::Zero(), moment = Point::Zero();
+  double fan = 0;
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const Point& a = mesh.points[polygon[k]];
+    const Point& b = mesh.points[polygon[(k + 1) % polygon.size()]];
+    const Point twice = (a - centre).cross(b - centre);
+    area += twice / 2;
+    fan += twice.norm() / 2;
+    moment += twice.norm() / 2 * (a + b + centre) / 3;
+  }
+  FaceGeometry g;
+  g.area = area.norm();
+  g.normal = g.area > 0 ? Point(area / g.area) : Point::Zero();
+  g.centroid = fan > 0 ? Point(moment / fan) : centre;
+  return g;
+}
+
+std::string region_name(const VoronoiMesh& mesh, std::int32_t label) {
+  if (label >= 0 && static_cast<std::size_t>(label) < mesh.region_names.size()) return mesh.region_names[label];
+  return label == kOutsideRegion ? "outside" : "material" + std::to_string(label);
 }
 
 double total_volume(const VoronoiMesh& mesh) {

@@ -8,6 +8,7 @@
 #include <system_error>
 #include <vector>
 
+#include "export/region_words.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
 
@@ -15,11 +16,6 @@ namespace vorocrust {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string region_name(std::int32_t region) {
-  if (region == kOutsideRegion) return "outside";
-  return region > 0 ? "material" + std::to_string(region) : "region_minus" + std::to_string(-static_cast<std::int64_t>(region));
-}
 
 std::string header(const char* cls, const char* location, const char* object, const std::string& note = "") {
   std::string h = "FoamFile\n{\n    version     2.0;\n    format      ascii;\n    class       ";
@@ -46,7 +42,7 @@ struct Ordering {
   std::vector<Patch> patches;
 };
 
-Ordering order_faces(const VoronoiMesh& mesh) {
+Ordering order_faces(const VoronoiMesh& mesh, const io::RegionWords& word) {
   Ordering o;
   for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
     if (mesh.faces[f].neighbour != kNoCell) o.faces.push_back(f);
@@ -62,7 +58,7 @@ Ordering order_faces(const VoronoiMesh& mesh) {
     if (face.neighbour == kNoCell) by_pair[{face.regions.back, face.regions.front}].push_back(f);
   }
   for (const auto& [pair, faces] : by_pair) {
-    o.patches.push_back({region_name(pair.first) + "_to_" + region_name(pair.second), o.faces.size(), faces.size()});
+    o.patches.push_back({word(pair.first) + "_to_" + word(pair.second), o.faces.size(), faces.size()});
     o.faces.insert(o.faces.end(), faces.begin(), faces.end());
   }
   return o;
@@ -109,7 +105,17 @@ void write_lists(const VoronoiMesh& mesh, const Ordering& o, const fs::path& pol
   write_file_atomically(poly / "neighbour", text);
 }
 
-void write_boundary_and_zones(const VoronoiMesh& mesh, const Ordering& o, const fs::path& poly) {
+// An OpenFOAM labelList, `name List<label>` with its count and one entry a line.
+template <class Items, class Item>
+void append_list(std::string& text, const char* name, const char* type, const Items& items, Item item) {
+  text += std::string("    ") + name + " List<" + type + ">\n";
+  append(text, "%zu\n(\n", items.size());
+  for (const auto& x : items) append(text, "%lld\n", static_cast<long long>(item(x)));
+  text += ")\n;\n";
+}
+
+void write_boundary_and_zones(const VoronoiMesh& mesh, const Ordering& o, const io::RegionWords& word,
+                              const fs::path& poly) {
   std::string text = header("polyBoundaryMesh", "constant/polyMesh", "boundary");
   append(text, "%zu\n(\n", o.patches.size());
   for (const Patch& p : o.patches) {
@@ -124,13 +130,33 @@ void write_boundary_and_zones(const VoronoiMesh& mesh, const Ordering& o, const 
   text = header("regIOobject", "constant/polyMesh", "cellZones");
   append(text, "%zu\n(\n", zones.size());
   for (const auto& [region, cells] : zones) {
-    text += region_name(region) + "\n{\n    type cellZone;\n    cellLabels List<label>\n";
-    append(text, "%zu\n(\n", cells.size());
-    for (std::size_t c : cells) append(text, "%zu\n", c);
-    text += ")\n;\n}\n";
+    text += word(region) + "\n{\n    type cellZone;\n";
+    append_list(text, "cellLabels", "label", cells, [](std::size_t c) { return c; });
+    text += "}\n";
   }
   text += ")\n";
   write_file_atomically(poly / "cellZones", text);
+
+  // Interfaces between materials are internal faces; each pair of materials is a face zone,
+  // oriented from the lower label to the higher (flipMap marks faces whose owner is the higher).
+  std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::size_t>> interfaces;
+  for (std::size_t k = 0; k < o.internal; ++k) {
+    const VoronoiFace& f = mesh.faces[o.faces[k]];
+    if (f.regions.back != f.regions.front) {
+      interfaces[{std::min(f.regions.back, f.regions.front), std::max(f.regions.back, f.regions.front)}].push_back(k);
+    }
+  }
+  text = header("regIOobject", "constant/polyMesh", "faceZones");
+  append(text, "%zu\n(\n", interfaces.size());
+  for (const auto& [pair, faces] : interfaces) {
+    text += word(pair.first) + "_to_" + word(pair.second) + "\n{\n    type faceZone;\n";
+    append_list(text, "faceLabels", "label", faces, [](std::size_t k) { return k; });
+    append_list(text, "flipMap", "bool", faces,
+                [&, low = pair.first](std::size_t k) { return mesh.faces[o.faces[k]].regions.back != low; });
+    text += "}\n";
+  }
+  text += ")\n";
+  write_file_atomically(poly / "faceZones", text);
 }
 
 // The least a case needs for OpenFOAM's utilities (checkMesh, foamToVTK, the solvers' setup).
@@ -166,9 +192,10 @@ void write_openfoam_case(const VoronoiMesh& mesh, const std::filesystem::path& c
   const fs::path poly = case_dir / "constant" / "polyMesh", system = case_dir / "system";
   make_folder(poly);
   make_folder(system);
-  const Ordering o = order_faces(mesh);
+  const io::RegionWords word(mesh);
+  const Ordering o = order_faces(mesh, word);
   write_lists(mesh, o, poly);
-  write_boundary_and_zones(mesh, o, poly);
+  write_boundary_and_zones(mesh, o, word, poly);
   write_system(system);
 }
 

@@ -169,6 +169,7 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   CellsOptions cells_options;
   cells_options.threads = options.threads;
   result.cells = clock("cells", [&] { return compute_cells(result.seeds, cells_options); });
+  result.cells.region_names = result.surface.region_names;
   if (progress && !progress({"cell quality", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
   CellQualityOptions quality_options;
   quality_options.threads = options.threads;

@@ -273,6 +273,23 @@ std::string run_report_json(const RunReport& report, int indent) {
   return doc.dump(indent);
 }
 
+std::vector<std::string> run_report_regions(const std::filesystem::path& report_json) {
+  std::ifstream in(report_json, std::ios::binary);
+  if (!in) return {};
+  std::stringstream text;
+  text << in.rdbuf();
+  const json doc = json::parse(text.str(), nullptr, false);
+  if (!doc.is_object() || !doc.contains("surface") || !doc["surface"].is_object()) return {};
+  const json& regions = doc["surface"].value("regions", json());
+  std::vector<std::string> names;
+  if (!regions.is_array()) return {};
+  for (const json& name : regions) {
+    if (!name.is_string()) return {};
+    names.push_back(name.get<std::string>());
+  }
+  return names;
+}
+
 std::vector<std::string> run_report_inputs(const std::filesystem::path& report_json) {
   const auto fail = [&](const std::string& why) {
     throw Error(Error::Kind::UnreadableInput, why, {.file = report_json.string()});
