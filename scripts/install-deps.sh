@@ -15,6 +15,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev python3
   # the cells' exports checked by the real readers: VTK's Python module and OpenFOAM's checkMesh
   python3-vtk9 openfoam
+  # the tests' independent region volumes (a voxel flood fill)
+  python3-scipy
   # the Python module (pybind11 over Debian's Python 3 and NumPy)
   python3-dev python3-numpy pybind11-dev
   # the FreeCAD workbench and its tests (freecadcmd, and freecad under xvfb-run, below)

@@ -32,6 +32,19 @@ def vtk_cell_volumes(grid):
     return cell_array(f.GetOutput(), "Volume")
 
 
+def polyhedron_faces(grid, cell):
+    """The polygons of a polyhedron cell of a VTK grid, as tuples of point ids."""
+    ids = vtk.vtkIdList()
+    grid.GetFaceStream(cell, ids)
+    stream = [ids.GetId(i) for i in range(ids.GetNumberOfIds())]
+    faces, i = [], 1
+    for _ in range(stream[0]):
+        n = stream[i]
+        faces.append(tuple(stream[i + 1:i + 1 + n]))
+        i += n + 1
+    return faces
+
+
 def check_mesh(case):
     env = dict(os.environ, WM_PROJECT_DIR="/usr/share/openfoam")
     r = subprocess.run([CHECKMESH, "-case", case], capture_output=True, text=True, timeout=600, env=env)

@@ -12,7 +12,8 @@ import unittest
 import vtk
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from volume_mesh import cell_array, check_mesh, read_obj_triangles, read_vtu, vtk_boundary_volume  # noqa: E402
+from volume_mesh import (cell_array, check_mesh, polyhedron_faces, read_obj_triangles, read_vtu,  # noqa: E402
+                         vtk_boundary_volume)
 
 BINARY, MODELS = sys.argv[1:3]
 del sys.argv[1:3]
@@ -35,19 +36,6 @@ def triangle_area(t):
     v = [t[2][k] - t[0][k] for k in range(3)]
     n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
     return 0.5 * sum(c * c for c in n) ** 0.5
-
-
-def cell_faces(grid, cell):
-    """The polygons of a polyhedron cell, as tuples of point ids."""
-    ids = vtk.vtkIdList()
-    grid.GetFaceStream(cell, ids)
-    stream = [ids.GetId(i) for i in range(ids.GetNumberOfIds())]
-    faces, i = [], 1
-    for _ in range(stream[0]):
-        n = stream[i]
-        faces.append(tuple(stream[i + 1:i + 1 + n]))
-        i += n + 1
-    return faces
 
 
 class TerrainInItsBox(unittest.TestCase):
@@ -104,7 +92,7 @@ class TerrainInItsBox(unittest.TestCase):
 
         cells_of_face = {}
         for c in range(grid.GetNumberOfCells()):
-            for face in cell_faces(grid, c):
+            for face in polyhedron_faces(grid, c):
                 if len(face) == 3:
                     k = key(points.GetPoint(i) for i in face)
                     cells_of_face[k] = cells_of_face.get(k, 0) + 1

@@ -70,7 +70,8 @@ def main():
     check(toolbar is not None and toolbar.isVisible(), "no VoroCrust toolbar")
 
     doc = App.newDocument("VoroCrustGui")
-    box, sphere, input_volume = box_and_sphere(doc)
+    box, sphere, material_volumes = box_and_sphere(doc)
+    input_volume = sum(material_volumes.values())
 
     out = os.path.join(WORK, "out")
     preferences = App.ParamGet(VoroCrustGui.PREFERENCES)
@@ -124,8 +125,8 @@ def main():
     check(results(doc) == [result], "results %s" % results(doc))
     surfaces = [o for o in result.Group if o.isDerivedFrom("Mesh::Feature")]
     seeds = [o for o in result.Group if o.isDerivedFrom("Points::Feature")]
-    # One surface per material: the box and the sphere.
-    check(len(surfaces) == 2 and len(seeds) == 1, "children %s" % [o.Label for o in result.Group])
+    # One surface per material: the two boxes and the sphere.
+    check(len(surfaces) == 3 and len(seeds) == 1, "children %s" % [o.Label for o in result.Group])
     check(all(o.ViewObject.Visibility for o in surfaces) and seeds[0].Points.CountPoints == result.SeedCount,
           "shown objects")
     check(all(o.Mesh.isSolid() and o.Mesh.countComponents() == 1 for o in surfaces), "the output surfaces")
@@ -168,7 +169,7 @@ def main():
     cancel.click()
     wait(lambda: not Gui.Control.activeDialog(), "the panel to close", timeout=60)
 
-    summary.update(out=out, cells=result.CellCount, volume=result.Volume, input_volume=input_volume, materials=2,
+    summary.update(out=out, cells=result.CellCount, volume=result.Volume, input_volume=input_volume, materials=3,
                    seeds=result.SeedCount, triangles=result.SurfaceTriangles, stop_after=STOP_AFTER,
                    progress_updates=len(fractions))
     with open(SUMMARY, "w") as f:

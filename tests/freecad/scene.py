@@ -12,15 +12,22 @@ def check(condition, what):
 
 
 def box_and_sphere(doc):
-    """A Part box 10 x 10 x 10 at the origin and a Mesh sphere of radius 4 apart from it;
-    returns (box, sphere, the volume they enclose)."""
+    """A Part compound "Boxes" of two 10 x 10 x 10 boxes touching along a face (Box at the
+    origin, Block beside it at x = 10) and a Mesh sphere of radius 4 apart from them; returns
+    (the compound, the sphere, {material: volume}) with the materials the library names them:
+    "Boxes/solid 1", "Boxes/solid 2" and "Sphere"."""
     box = doc.addObject("Part::Box", "Box")
-    box.Length = box.Width = box.Height = 10
+    block = doc.addObject("Part::Box", "Block")
+    for b in (box, block):
+        b.Length = b.Width = b.Height = 10
+    block.Placement.Base = App.Vector(10, 0, 0)
+    boxes = doc.addObject("Part::Compound", "Boxes")
+    boxes.Links = [box, block]
     sphere = doc.addObject("Mesh::Feature", "Sphere")
     sphere.Mesh = Mesh.createSphere(4.0, 48)
-    sphere.Placement.Base = App.Vector(20, 5, 5)
+    sphere.Placement.Base = App.Vector(30, 5, 5)
     doc.recompute()
-    return box, sphere, box.Shape.Volume + sphere.Mesh.Volume
+    return boxes, sphere, {"Boxes/solid 1": 1000.0, "Boxes/solid 2": 1000.0, "Sphere": sphere.Mesh.Volume}
 
 
 def overlapping_box(doc):

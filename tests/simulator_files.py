@@ -1,0 +1,102 @@
+"""Readers of the simulators' mesh files, written from the formats' specifications alone, for the
+tests to check what the library writes: TOUGH's MESH (fixed-width ELEME and CONNE records) and
+PFLOTRAN's explicit unstructured grid (.uge) with its region files."""
+import re
+
+NUMBER = re.compile(r"^ *[-+]?(\d+\.?\d*|\.\d+)([EeDd][-+]?\d+)?$")
+
+
+def fortran_real(field, what):
+    """A Fortran E/F input field: blanks around a number, nothing else."""
+    if not NUMBER.match(field):
+        raise ValueError("%s: %r is not a real number field" % (what, field))
+    return float(field.replace("D", "E").replace("d", "e"))
+
+
+def read_tough_mesh(path):
+    """The ELEME and CONNE blocks of a TOUGH MESH file. ELEME records (TOUGH2 user's guide): name
+    A3+I2 (columns 1-5), NSEQ I5, NADD I5, material A3+A2 (16-20), VOLX E10.4 (21-30), AHTX
+    (31-40), PMX (41-50), X, Y, Z (51-80). CONNE records: names (1-5, 6-10), NSEQ, NAD1, NAD2,
+    ISOT I5 each (11-30), D1, D2, AREAX, BETAX E10.4 (31-70). Blocks end at a blank record.
+    Returns (elements: list of dicts, connections: list of dicts); raises ValueError naming the
+    line of a record that breaks the format."""
+    with open(path) as f:
+        lines = f.read().split("\n")
+    elements, connections, block = [], [], None
+    for number, line in enumerate(lines, 1):
+        where = "%s:%d" % (path, number)
+        if block is None:
+            if line[:5] in ("ELEME", "CONNE"):
+                block = line[:5]
+            elif line.strip():
+                raise ValueError("%s: %r outside a block" % (where, line))
+            continue
+        if not line.strip():
+            block = None
+            continue
+        if block == "ELEME":
+            if len(line) > 80:
+                raise ValueError("%s: ELEME record of %d columns" % (where, len(line)))
+            line = line.ljust(80)
+            name = line[0:5]
+            if not re.match(r"^[A-Za-z0-9 ]{3}[ 0-9][0-9]$", name):
+                raise ValueError("%s: element name %r is not A3 and I2" % (where, name))
+            if line[5:15].strip() or line[30:50].strip():
+                raise ValueError("%s: NSEQ, NADD, AHTX or PMX set" % where)
+            elements.append({"name": name, "material": line[15:20],
+                             "volume": fortran_real(line[20:30], where + " VOLX"),
+                             "xyz": [fortran_real(line[50 + 10 * k:60 + 10 * k], where + " X") for k in range(3)]})
+        else:
+            if len(line) > 80:
+                raise ValueError("%s: CONNE record of %d columns" % (where, len(line)))
+            line = line.ljust(80)
+            isot = line[25:30]
+            if line[10:25].strip() or not re.match(r"^ *[123]$", isot):
+                raise ValueError("%s: NSEQ, NAD1, NAD2 set or ISOT %r not 1, 2 or 3" % (where, isot))
+            connections.append({"names": (line[0:5], line[5:10]), "isot": int(isot),
+                                "d1": fortran_real(line[30:40], where + " D1"),
+                                "d2": fortran_real(line[40:50], where + " D2"),
+                                "area": fortran_real(line[50:60], where + " AREAX"),
+                                "betax": fortran_real(line[60:70], where + " BETAX")})
+    if block is not None:
+        raise ValueError("%s: the %s block does not end with a blank record" % (path, block))
+    return elements, connections
+
+
+def read_uge(path):
+    """PFLOTRAN's explicit unstructured grid: `CELLS n`, n lines `id x y z volume`, `CONNECTIONS
+    m`, m lines `id1 id2 x y z area`. Returns (cells: {id: (xyz, volume)}, connections: list of
+    (id1, id2, xyz, area))."""
+    with open(path) as f:
+        lines = [line.split() for line in f if line.strip()]
+    if lines[0][0] != "CELLS":
+        raise ValueError("%s: no CELLS card" % path)
+    n = int(lines[0][1])
+    cells = {}
+    for row in lines[1:1 + n]:
+        if len(row) != 5:
+            raise ValueError("%s: cell record %r" % (path, row))
+        cells[int(row[0])] = ([float(x) for x in row[1:4]], float(row[4]))
+    if len(cells) != n or sorted(cells) != list(range(1, n + 1)):
+        raise ValueError("%s: cell ids are not 1..%d" % (path, n))
+    card = lines[1 + n]
+    if card[0] != "CONNECTIONS":
+        raise ValueError("%s: no CONNECTIONS card" % path)
+    m = int(card[1])
+    connections = []
+    for row in lines[2 + n:]:
+        if len(row) != 6:
+            raise ValueError("%s: connection record %r" % (path, row))
+        connections.append((int(row[0]), int(row[1]), [float(x) for x in row[2:5]], float(row[5])))
+    if len(connections) != m:
+        raise ValueError("%s: %d connections, the card says %d" % (path, len(connections), m))
+    return cells, connections
+
+
+def read_ex(path):
+    """A PFLOTRAN explicit boundary region: `CONNECTIONS k`, then k lines `id x y z area`."""
+    with open(path) as f:
+        lines = [line.split() for line in f if line.strip()]
+    if lines[0][0] != "CONNECTIONS" or int(lines[0][1]) != len(lines) - 1:
+        raise ValueError("%s: the CONNECTIONS count does not match its records" % path)
+    return [(int(r[0]), [float(x) for x in r[1:4]], float(r[4])) for r in lines[1:]]
