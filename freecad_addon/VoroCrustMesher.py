@@ -5,15 +5,16 @@
                                           output_dir="/tmp/out")
 
 adds to the document a "VoronoiMesh" group holding one Mesh object per material surface and the
-seeds as a Points object, and writes the chosen files (VTU, OpenFOAM case, seeds.csv, surface
-OBJ/PLY, ...). Everything geometric is done by the `vorocrust` module (libvorocrust); this file
-only converts FreeCAD objects to its arrays and its results to document objects.
+seeds as a Points object, and writes the chosen files (VTU, OpenFOAM case, TOUGH MESH, PFLOTRAN
+grid, seeds.csv, surface OBJ/PLY, ...). Everything geometric is done by the `vorocrust` module
+(libvorocrust); this file only converts FreeCAD objects to its arrays and its results to
+document objects.
 
-Materials: every Part solid and every Mesh object is one part of the model, named after its
+Materials: every Part solid and every closed Mesh object is one material, named after its
 object (a shape with several solids gives "Label/solid N"), merged as the library merges several
-input files: one face group each, vertices with exactly equal coordinates shared. The library
-will tell materials apart by these groups when it meshes several materials; until then every
-closed shell bounds the one material "inside".
+input files: vertices with exactly equal coordinates shared, a face two solids share one
+interface between them. Part solids that touch are imprinted on each other first (Part's general
+fuse) and tessellated once, so that their common faces have one triangulation.
 """
 
 import dataclasses
@@ -30,7 +31,7 @@ import vorocrust
 #: formats the library gains appear here by themselves.
 FORMATS = dict(vorocrust.OUTPUT_FORMATS)
 #: Written when nothing else is asked for: the volume mesh and the compact seeds.
-DEFAULT_FORMATS = ("vtu", "openfoam", "seeds", "ply")
+DEFAULT_FORMATS = ("vtu", "openfoam", "tough", "pflotran", "seeds", "ply")
 #: Stages the run can stop after; "cells" is the whole mesh.
 STAGES = ("surface", "cells")
 
@@ -77,30 +78,74 @@ def _arrays(points, triangles):
             np.array(triangles, dtype=np.int64).reshape(-1, 3))
 
 
+def _conforming_solids(named_solids, tolerance):
+    """The solids imprinted on each other where they touch (Part's general fuse), each as
+    (points, triangles) tessellated once for all, so that a face two solids share has one
+    triangulation on both sides: the library then meshes it as the interface between their
+    materials. Solids that overlap (share volume) raise InvalidGeometryError naming both."""
+    for i, (name_a, a) in enumerate(named_solids):
+        for name_b, b in named_solids[i + 1:]:
+            if a.BoundBox.intersect(b.BoundBox) and a.common(b).Volume > 1e-9 * min(a.Volume, b.Volume):
+                raise vorocrust.InvalidGeometryError(
+                    "%s and %s intersect: solids may touch but not overlap (their common volume is %g)"
+                    % (name_a, name_b, a.common(b).Volume))
+    solids = [s for _, s in named_solids]
+    if len(solids) == 1:
+        fused, pieces = solids[0], [[solids[0]]]
+    else:
+        fused, pieces = solids[0].generalFuse(solids[1:])
+    fused.tessellate(tolerance)  # every face once: faces and edges shared alike
+    out = []
+    for split in pieces:
+        # Faces are tessellated apart; their common edges' points, equal to the last bit, are one.
+        points, index, triangles = [], {}, []
+        for piece in split:
+            for face in piece.Faces:
+                p, t = face.tessellate(tolerance)
+                ids = []
+                for q in p:
+                    key = (q.x, q.y, q.z)
+                    if key not in index:
+                        index[key] = len(points)
+                        points.append(q)
+                    ids.append(index[key])
+                triangles += [(ids[a], ids[b], ids[c]) for a, b, c in t]
+        out.append((points, triangles))
+    return out
+
+
 def model_parts(objects, tolerance):
     """The model's parts as (name, vorocrust.Surface): one per Mesh object, one per solid of a
     Part object (its faces, when it has no solid), in global coordinates. Part shapes are
-    tessellated so that no triangle lies farther than `tolerance` from the shape."""
+    tessellated so that no triangle lies farther than `tolerance` from the shape; solids that
+    touch share their common faces' triangles, which become interfaces between materials."""
     import Part  # only where Part objects are meshed
 
     if tolerance <= 0:
         raise vorocrust.UsageError("the tessellation tolerance must be positive, got %g" % tolerance)
     parts = []
+    solids = []  # (index in parts, name, solid)
     for obj in objects:
         if obj.isDerivedFrom("Mesh::Feature"):
             points, facets = obj.Mesh.Topology  # placement applied
             parts.append((obj.Label, vorocrust.Surface(*_arrays(points, facets), name=obj.Label)))
         elif obj.isDerivedFrom("Part::Feature"):
             shape = Part.getShape(obj)
-            pieces = shape.Solids or [shape]
-            for k, piece in enumerate(pieces):
-                name = obj.Label if len(pieces) == 1 else "%s/solid %d" % (obj.Label, k + 1)
-                points, triangles = piece.tessellate(tolerance)
-                parts.append((name, vorocrust.Surface(*_arrays(points, triangles), name=name)))
+            if not shape.Solids:
+                points, triangles = shape.tessellate(tolerance)
+                parts.append((obj.Label, vorocrust.Surface(*_arrays(points, triangles), name=obj.Label)))
+            for k, solid in enumerate(shape.Solids):
+                name = obj.Label if len(shape.Solids) == 1 else "%s/solid %d" % (obj.Label, k + 1)
+                solids.append((len(parts), name, solid))
+                parts.append((name, None))
         else:
             raise vorocrust.UsageError("%s is neither a Mesh nor a Part object" % obj.Label)
     if not parts:
         raise vorocrust.UsageError("nothing to mesh: select Mesh objects or Part solids")
+    if solids:
+        tessellated = _conforming_solids([(name, solid) for _, name, solid in solids], tolerance)
+        for (index, name, _), (points, triangles) in zip(solids, tessellated):
+            parts[index] = (name, vorocrust.Surface(*_arrays(points, triangles), name=name))
     return parts
 
 
