@@ -21,7 +21,7 @@ inline constexpr const char* kStratumIndexAttribute = "stratum_index";  // corne
 inline constexpr const char* kBackRegionAttribute = "back_region";
 inline constexpr const char* kFrontRegionAttribute = "front_region";
 // The seeds: the region (material) a seed belongs to, 0 outside, and its kind (0 surface,
-// 1 interior, 2 outside), as seeds.csv's `label` and `kind` columns.
+// 1 interior, 2 outside, 3 cap), as seeds.csv's `label` and `kind` columns.
 inline constexpr const char* kLabelAttribute = "label";
 inline constexpr const char* kSeedKindAttribute = "kind";
 

@@ -1,6 +1,7 @@
 // Interior seeds (paper 2.5, A.5) through the whole pipeline on cgal_joint.off: no seed enters a
-// protecting ball or a surface seed's ball, so the surface survives in the cells; radii stay
-// L-Lipschitz; every mode gives cells bounded by exactly the output surface.
+// protecting ball or a surface seed's ball, so the surface survives in the cells; the sampled
+// seeds keep clear of the balls' spheres, the cap seeds lie on them; radii stay L-Lipschitz;
+// every mode gives cells bounded by exactly the output surface, with no highly skew face.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,7 +10,9 @@
 
 #include "cells/mesh_checks.hpp"
 #include "core/surface_measures.hpp"
+#include "interior/sample_interior.hpp"
 #include "test_support.hpp"
+#include "vorocrust/face_skewness.hpp"
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/read_mesh.hpp"
 
@@ -47,8 +50,18 @@ void expect_surface_untouched(const MeshResult& r) {
     const Point& z = r.seeds[i].position;
     ASSERT_NE(r.seeds[i].kind, SeedKind::Surface) << i;
     EXPECT_EQ(r.seeds[i].kind == SeedKind::Outside, r.seeds[i].region == kOutsideRegion) << i;
+    bool on_a_sphere = false;
     for (const Ball& b : r.balls) {
-      ASSERT_GE((z - b.center).norm(), b.radius) << "seed " << i << " inside a protecting ball";
+      const double d = (z - b.center).norm();
+      ASSERT_GE(d, b.radius * (1 - 1e-12)) << "seed " << i << " inside a protecting ball";
+      on_a_sphere = on_a_sphere || d <= b.radius * (1 + 1e-12);
+      if (r.seeds[i].kind != SeedKind::Cap) {
+        ASSERT_GE(d, b.radius * (1 + kBallClearance)) << "seed " << i << " within the clearance of a ball";
+      }
+    }
+    if (r.seeds[i].kind == SeedKind::Cap) {
+      EXPECT_TRUE(on_a_sphere) << "cap seed " << i << " on no ball's sphere";
+      continue;
     }
     for (std::size_t s = 0; s < first; ++s) {
       ASSERT_GE((z - r.seeds[s].position).norm(), r.seeds[s].radius) << "seed " << i << " inside surface seed " << s;
@@ -74,13 +87,16 @@ void expect_bounded_by_the_surface(const MeshResult& r) {
   std::size_t material = 0;
   for (const Seed& s : r.seeds) material += s.region != kOutsideRegion;
   EXPECT_EQ(r.cells.cells.size(), material);
+  EXPECT_TRUE(skew_faces(r.cells).empty()) << skew_faces(r.cells).size() << " highly skew faces";
 }
 
 TEST(SampleInterior, RandomSeedsStayOutOfEveryBallAndKeepTheSurface) {
   const MeshResult& r = run(InteriorMode::Random);
   EXPECT_GT(r.interior.interior_seeds, 100u);
   EXPECT_GT(r.interior.outside_seeds, 100u);
-  EXPECT_EQ(r.interior.interior_seeds + r.interior.outside_seeds, r.seeds.size() - first_interior(r));
+  EXPECT_GT(r.interior.cap_seeds, 100u);
+  EXPECT_EQ(r.interior.interior_seeds + r.interior.outside_seeds + r.interior.cap_seeds,
+            r.seeds.size() - first_interior(r));
   expect_surface_untouched(r);
   expect_bounded_by_the_surface(r);
 }
@@ -89,8 +105,9 @@ TEST(SampleInterior, RadiiAreLipschitzAndSeedsOutsideEachOthersBalls) {
   const MeshResult& r = run(InteriorMode::Random);
   const double L = MeshOptions{}.lipschitz;
   for (std::size_t i = first_interior(r); i < r.seeds.size(); ++i) {
+    if (r.seeds[i].kind == SeedKind::Cap) continue;  // placed on spheres, not sampled
     for (std::size_t j = 0; j < r.seeds.size(); ++j) {
-      if (i == j) continue;
+      if (i == j || r.seeds[j].kind == SeedKind::Cap) continue;
       const double d = (r.seeds[i].position - r.seeds[j].position).norm();
       ASSERT_LE(r.seeds[i].radius, r.seeds[j].radius + L * d + 1e-12) << i << " " << j;
       if (j < i && r.seeds[j].kind != SeedKind::Surface) {
@@ -121,8 +138,9 @@ TEST(SampleInterior, LatticeGivesCubesInTheDeepInterior) {
   expect_surface_untouched(r);
   expect_bounded_by_the_surface(r);
   // A lattice seed whose six lattice neighbours are seeds too, and no seed of the random layer
-  // near the surface close enough to cut a corner, has a cube for its cell. The joint is thin:
-  // about one lattice seed in nine is that deep.
+  // near the surface close enough to cut a corner, has a cube for its cell. The joint is thin,
+  // and the poles on the balls' spheres (cap seeds) make a second layer under the surface: about
+  // one lattice seed in seventeen is that deep.
   std::size_t cubes = 0;
   for (const VoronoiCell& c : r.cells.cells) {
     if (c.faces.size() != 6) continue;
@@ -134,7 +152,7 @@ TEST(SampleInterior, LatticeGivesCubesInTheDeepInterior) {
     }
     cubes += hi < lo * (1 + 1e-6);
   }
-  EXPECT_GT(cubes, r.interior.lattice_seeds / 12);
+  EXPECT_GT(cubes, r.interior.lattice_seeds / 20);
 }
 
 TEST(SampleInterior, CvtMovesInteriorSeedsTowardTheirCentroidsAndKeepsTheSurface) {
@@ -142,9 +160,11 @@ TEST(SampleInterior, CvtMovesInteriorSeedsTowardTheirCentroidsAndKeepsTheSurface
   const MeshResult& cvt = run(InteriorMode::Cvt);
   expect_surface_untouched(cvt);
   expect_bounded_by_the_surface(cvt);
-  ASSERT_EQ(cvt.seeds.size(), random.seeds.size());
+  // Equal up to the skew repairs, which follow the cells and so differ.
+  const std::size_t sampled = cvt.seeds.size() - cvt.interior.repair_seeds;
+  ASSERT_EQ(sampled, random.seeds.size() - random.interior.repair_seeds);
   std::size_t moved = 0;
-  for (std::size_t i = 0; i < cvt.seeds.size(); ++i) {
+  for (std::size_t i = 0; i < sampled; ++i) {
     if (random.seeds[i].kind == SeedKind::Interior) {
       moved += cvt.seeds[i].position != random.seeds[i].position;
     } else {

@@ -308,7 +308,7 @@ class Module(unittest.TestCase):
                 # The arrays: a cell per material seed, interior and outside seeds after the surface seeds.
                 seeds, cells = result.seeds, result.cells
                 kinds = list(seeds.kinds)
-                self.assertEqual(set(kinds), {"surface", "interior", "outside"})
+                self.assertEqual(set(kinds), {"surface", "interior", "outside", "cap"})
                 surface_seeds = kinds.count("surface")
                 self.assertEqual(kinds[:surface_seeds], ["surface"] * surface_seeds)  # surface seeds first
                 self.assertEqual(cells.num_cells, int((seeds.labels > 0).sum()))

@@ -12,6 +12,7 @@
 // - shortest edge relative to the cell's size: the shortest edge of its faces divided by the
 //   cube root of its volume, 1 for a cube, so a short edge reads the same in a large cell and a
 //   small one.
+// Per face: skewness, as OpenFOAM's checkMesh measures it (face_skewness.hpp).
 // The sphere and the ball are computed in a frame where the cell has unit size, so their
 // tolerances are relative; the enclosing sphere is grown to its farthest point and the ball
 // shrunk to its nearest face plane, so the sphere always encloses and the ball always fits: the
@@ -71,6 +72,12 @@ struct CellQuality {
   double mean_faces = 0;
   double min_shortest_edge_relative = 0, mean_shortest_edge_relative = 0;
   std::size_t shortest_edge_cell = 0;  // the cell of the smallest relative edge (the first of equals)
+
+  // Face skewness as checkMesh measures it (face_skewness.hpp): the largest, its face, and the
+  // faces above checkMesh's threshold of 4, which fail its check.
+  double max_skewness = 0;
+  std::size_t most_skew_face = 0;
+  std::size_t highly_skew_faces = 0;
 };
 
 CellQuality measure_cell_quality(const VoronoiMesh& mesh, const CellQualityOptions& options = {});

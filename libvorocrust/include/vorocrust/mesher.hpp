@@ -113,6 +113,9 @@ struct SliverStats {
 struct InteriorStats {
   std::size_t interior_seeds = 0;  // seeds inside a material, away from the surface
   std::size_t outside_seeds = 0;   // seeds outside every material, bounding the boundary cells
+  std::size_t cap_seeds = 0;       // seeds on protecting spheres (poles and skew repairs), SeedKind::Cap
+  std::size_t repair_seeds = 0;    // of them, placed to remove highly skew faces after the cells
+  int repair_rounds = 0;           // rounds of those repairs (each computing the cells again)
   std::size_t darts = 0;           // seeds from dart throwing
   std::size_t spokes = 0;          // spokes shot
   std::size_t spoke_seeds = 0;     // seeds placed on spokes

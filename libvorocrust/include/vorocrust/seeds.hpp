@@ -15,7 +15,10 @@
 
 namespace vorocrust {
 
-enum class SeedKind : std::uint8_t { Surface, Interior, Outside };
+// Surface: a seed of a pair across the surface (paper 2.4). Interior, Outside: a seed away from
+// the surface (2.5) in a material or outside. Cap: a seed on one protecting ball's sphere that
+// keeps the cells about the ball's centre well shaped (interior/cap_seeds.hpp).
+enum class SeedKind : std::uint8_t { Surface, Interior, Outside, Cap };
 
 const char* to_string(SeedKind kind) noexcept;
 
@@ -30,14 +33,15 @@ struct Seed {
   SeedKind kind = SeedKind::Surface;
 };
 
-// OUTDIR/seeds.csv: `x,y,z,label,radius,kind`, 17 significant digits, written atomically.
+// OUTDIR/seeds.csv: `x,y,z,label,radius,kind` (kind surface, interior, outside or cap), 17
+// significant digits, written atomically.
 void write_seeds_csv(const std::vector<Seed>& seeds, const std::filesystem::path& path);
 
 // Reads what write_seeds_csv writes: the header line `x,y,z,label,radius,kind`, then one seed a
 // line (blank lines skipped). Throws Error(UnreadableInput) naming the file and line of the
 // first bad line: a missing or wrong header, a field count other than six, a number that does
 // not parse or is not finite, a label out of the 32-bit range, a kind other than surface,
-// interior or outside.
+// interior, outside or cap.
 std::vector<Seed> read_seeds_csv(const std::filesystem::path& path);
 
 }  // namespace vorocrust

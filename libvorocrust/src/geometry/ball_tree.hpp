@@ -34,12 +34,13 @@ class BallTree {
     double radius;
     std::uint32_t ball;
   };
-  // Whether some ball holds p strictly inside.
-  bool contains(const Point& p) const {
+  // Whether some ball, its radius scaled by `scale`, holds p strictly inside.
+  bool contains(const Point& p, double scale = 1) const {
     bool inside = false;
+    const double s2 = scale * scale;
     search(
-        p, [&](double d2, double max_radius, std::uint32_t) { return !inside && d2 < max_radius * max_radius; },
-        [&](const Sphere& s) { inside = inside || (s.centre - p).squaredNorm() < s.radius * s.radius; });
+        p, [&](double d2, double max_radius, std::uint32_t) { return !inside && d2 < s2 * max_radius * max_radius; },
+        [&](const Sphere& s) { inside = inside || (s.centre - p).squaredNorm() < s2 * s.radius * s.radius; });
     return inside;
   }
   // min over the balls q of r_q + L |p - q|: the largest radius a ball at p may have beside them

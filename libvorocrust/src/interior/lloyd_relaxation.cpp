@@ -1,6 +1,8 @@
 // Lloyd iterations over the interior seeds (paper 2.5).
 #include "interior/lloyd_relaxation.hpp"
 
+#include "interior/sample_interior.hpp"
+
 #include <algorithm>
 #include <limits>
 
@@ -15,7 +17,9 @@ double lloyd_relaxation(std::vector<Seed>& seeds, const BallIndex& protecting_ba
                         const ProgressCallback& progress) {
   BallTree surface_balls;
   for (std::uint32_t i = 0; i < seeds.size(); ++i) {
-    if (seeds[i].kind == SeedKind::Surface) surface_balls.insert(seeds[i].position, seeds[i].radius, i);
+    if (seeds[i].kind == SeedKind::Surface || seeds[i].kind == SeedKind::Cap) {
+      surface_balls.insert(seeds[i].position, seeds[i].radius, i);
+    }
   }
   CellsOptions options;
   options.threads = threads;
@@ -38,7 +42,7 @@ double lloyd_relaxation(std::vector<Seed>& seeds, const BallIndex& protecting_ba
       for (const Index f : cell.faces) {
         const VoronoiFace& face = mesh.faces[f];
         const Index across = face.owner_seed == cell.seed ? face.neighbour_seed : face.owner_seed;
-        if (seeds[across].kind != SeedKind::Surface) continue;
+        if (seeds[across].kind != SeedKind::Surface && seeds[across].kind != SeedKind::Cap) continue;
         const double d = (seeds[across].position - seed.position).squaredNorm();
         if (d < nearest) nearest = d, nearest_surface = &seeds[across];
       }
@@ -48,7 +52,7 @@ double lloyd_relaxation(std::vector<Seed>& seeds, const BallIndex& protecting_ba
       }
       for (int halving = 0; halving < 4; ++halving, step *= 0.5) {
         const Point moved = seed.position + step;
-        if (protecting_balls.covers(moved) || surface_balls.contains(moved)) continue;
+        if (protecting_balls.covers(moved, 1 + kBallClearance) || surface_balls.contains(moved)) continue;
         largest_move = std::max(largest_move, step.norm() / seed.radius);
         seed.position = moved;
         break;

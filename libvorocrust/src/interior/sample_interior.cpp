@@ -105,7 +105,8 @@ class InteriorSampler {
   void shoot_spokes() {
     ++stats_.rounds;
     std::deque<std::uint32_t> queue;
-    for (std::uint32_t i = 0; i < seeds_.size(); ++i) queue.push_back(i);
+    // The given seeds lie on the protecting spheres, where spokes find no room.
+    for (std::uint32_t i = given_; i < seeds_.size(); ++i) queue.push_back(i);
     std::normal_distribution<double> normal(0.0, 1.0);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<BallTree::Sphere> near;
@@ -163,6 +164,12 @@ class InteriorSampler {
 
   std::vector<Seed> take() { return std::move(seeds_); }
 
+  // Seeds placed by others (the poles), kept as they are.
+  void add_given(const std::vector<Seed>& seeds) {
+    for (const Seed& s : seeds) add(s);
+    given_ = static_cast<std::uint32_t>(seeds_.size());
+  }
+
  private:
   // The seed a point z would be: the region of its nearest surface seed and the radius that
   // keeps the balls L-Lipschitz; nothing when z lies outside the box or in a ball.
@@ -190,7 +197,7 @@ class InteriorSampler {
           radius = std::min(radius, s.radius + L * std::sqrt(d2));
         });
     if (inside) return std::nullopt;
-    if (protecting_.covers(z)) return std::nullopt;
+    if (protecting_.covers(z, 1 + kBallClearance)) return std::nullopt;
     radius = std::min(radius, sizing_(z));
     const std::int32_t region = surface_[nearest_seed].region;
     return Seed{z, region, radius, region == kOutsideRegion ? SeedKind::Outside : SeedKind::Interior};
@@ -226,8 +233,10 @@ class InteriorSampler {
     }
     for (StratumType type : {StratumType::Corner, StratumType::Crease, StratumType::Patch}) {
       balls_.clear();
-      protecting_.reaching(type, z, reach, balls_);
-      for (std::uint32_t b : balls_) out.push_back({protecting_[b].site.position, protecting_[b].radius, b});
+      protecting_.reaching_scaled(type, z, 1 + kBallClearance, reach, balls_);
+      for (std::uint32_t b : balls_) {
+        out.push_back({protecting_[b].site.position, (1 + kBallClearance) * protecting_[b].radius, b});
+      }
     }
   }
 
@@ -288,17 +297,19 @@ class InteriorSampler {
   geometry::Box box_, domain_;
   BallTree surface_tree_, interior_tree_;
   std::vector<Seed> seeds_;
+  std::uint32_t given_ = 0;  // seeds_[0, given_) were given (add_given), not sampled
   mutable std::vector<std::pair<double, double>> covered_, gaps_;
   mutable std::vector<std::uint32_t> balls_;
 };
 
 }  // namespace
 
-std::vector<Seed> sample_interior(const std::vector<Seed>& surface_seeds, const BallIndex& protecting_balls,
-                                  const SizingField& sizing, const geometry::Box& domain,
-                                  const InteriorOptions& options, const ProgressCallback& progress,
-                                  InteriorStats& stats) {
+std::vector<Seed> sample_interior(const std::vector<Seed>& surface_seeds, const std::vector<Seed>& cap_seeds,
+                                  const BallIndex& protecting_balls, const SizingField& sizing,
+                                  const geometry::Box& domain, const InteriorOptions& options,
+                                  const ProgressCallback& progress, InteriorStats& stats) {
   InteriorSampler sampler(surface_seeds, protecting_balls, sizing, domain, options, progress, stats);
+  sampler.add_given(cap_seeds);
   if (options.mode == InteriorMode::Lattice) sampler.place_lattice();
   sampler.throw_darts();
   constexpr int kMaxRounds = 20;

@@ -4,8 +4,11 @@
 // region of its nearest surface seed and a radius that extends the surface sizing inward,
 // r_z = min(sz(z), min over seeds q of r_q + L |z - q|), so cells grow away from the surface at
 // the rate L allows. A candidate is refused when it lies inside a protecting ball (the surface
-// facets are Voronoi facets only while no seed enters the union of balls), inside a surface
-// seed's ball or inside an interior seed's ball.
+// facets are Voronoi facets only while no seed enters the union of balls) or within
+// kBallClearance of one's sphere (a seed just outside a ball cuts small, highly skew faces
+// about its centre, cap_seeds.hpp), inside a surface seed's ball or inside an interior seed's
+// ball. The cap seeds given (pole_seeds) are placed first, as interior seeds of their ball's
+// radius.
 //
 // Random: dart throwing over the input's bounding box grown 3x about its centre until 100
 // consecutive misses, then spoke darts from every seed until each has missed 100 times in a row:
@@ -33,6 +36,9 @@ namespace vorocrust {
 class BallIndex;
 class SizingField;
 
+// Random interior seeds keep out of (1 + kBallClearance) times every protecting ball.
+inline constexpr double kBallClearance = 0.3;
+
 struct InteriorOptions {
   InteriorMode mode = InteriorMode::Random;
   double lipschitz = 0.25;
@@ -41,9 +47,11 @@ struct InteriorOptions {
 };
 
 
-// Interior and outside seeds for the given surface seeds (surface seeds are not repeated).
-// `domain` is the input's bounding box. Fills the sampling counts of `stats`.
-std::vector<Seed> sample_interior(const std::vector<Seed>& surface_seeds, const BallIndex& protecting_balls,
+// Interior and outside seeds for the given surface seeds (surface seeds are not repeated), after
+// the cap seeds, which are returned first. `domain` is the input's bounding box. Fills the
+// sampling counts of `stats`.
+std::vector<Seed> sample_interior(const std::vector<Seed>& surface_seeds, const std::vector<Seed>& cap_seeds,
+                                  const BallIndex& protecting_balls,
                                   const SizingField& sizing, const geometry::Box& domain,
                                   const InteriorOptions& options, const ProgressCallback& progress,
                                   InteriorStats& stats);

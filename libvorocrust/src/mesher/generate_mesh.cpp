@@ -4,11 +4,13 @@
 
 #include "features/smooth_patches.hpp"
 #include "features/strata.hpp"
+#include "interior/cap_seeds.hpp"
 #include "interior/lloyd_relaxation.hpp"
 #include "io/enclose_in_box.hpp"
 #include "interior/sample_interior.hpp"
 #include "refinement/refine_balls.hpp"
 #include "seeds/eliminate_slivers.hpp"
+#include "seeds/locate_regions.hpp"
 #include "seeds/surface_seeds.hpp"
 #include "refinement/sizing_field.hpp"
 #include "vorocrust/error.hpp"
@@ -135,8 +137,9 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
     return eliminate_slivers(refinement, SliverOptions{}, progress, result.slivers);
   });
   result.balls = refinement.balls();
+  const RegionLocator regions(surface);
   SurfaceSeeds seeds = clock("surface seeds", [&] {
-    return surface_seeds(refinement.index(), pairs.uncovered, RegionLocator(surface));
+    return surface_seeds(refinement.index(), pairs.uncovered, regions);
   });
   result.seeds = std::move(seeds.seeds);
   result.surface = std::move(seeds.surface);
@@ -151,11 +154,11 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   interior_options.seed = options.seed;
   geometry::Box domain;
   for (const Point& p : input.vertices) domain.include(p);
+  std::vector<Seed> caps = clock("cap seeds", [&] { return pole_seeds(result.seeds, refinement.index(), regions); });
   std::vector<Seed> interior = clock("interior seeds", [&] {
-    return sample_interior(result.seeds, refinement.index(), sizing, domain, interior_options, progress,
+    return sample_interior(result.seeds, caps, refinement.index(), sizing, domain, interior_options, progress,
                            result.interior);
   });
-  for (const Seed& s : interior) (s.kind == SeedKind::Outside ? result.interior.outside_seeds : result.interior.interior_seeds)++;
   result.seeds.insert(result.seeds.end(), interior.begin(), interior.end());
   if (options.interior == InteriorMode::Cvt && options.cvt_iterations > 0) {
     result.interior.cvt_iterations = options.cvt_iterations;
@@ -169,6 +172,26 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   CellsOptions cells_options;
   cells_options.threads = options.threads;
   result.cells = clock("cells", [&] { return compute_cells(result.seeds, cells_options); });
+  // Faces still highly skew about a ball's centre get a seed on its sphere, and the cells are
+  // computed again, a few rounds at most (interior/cap_seeds.hpp).
+  constexpr int kRepairRounds = 3;
+  for (int round = 0; round < kRepairRounds; ++round) {
+    if (progress && !progress({"skew repair", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
+    const std::vector<Seed> repairs = clock("skew repair", [&] {
+      return skew_repair_seeds(result.cells, result.seeds, refinement.index(), regions, caps);
+    });
+    if (repairs.empty()) break;
+    ++result.interior.repair_rounds;
+    result.interior.repair_seeds += repairs.size();
+    caps.insert(caps.end(), repairs.begin(), repairs.end());
+    result.seeds.insert(result.seeds.end(), repairs.begin(), repairs.end());
+    result.cells = clock("cells", [&] { return compute_cells(result.seeds, cells_options); });
+  }
+  for (const Seed& s : result.seeds) {
+    if (s.kind == SeedKind::Outside) ++result.interior.outside_seeds;
+    if (s.kind == SeedKind::Interior) ++result.interior.interior_seeds;
+    if (s.kind == SeedKind::Cap) ++result.interior.cap_seeds;
+  }
   result.cells.region_names = result.surface.region_names;
   if (progress && !progress({"cell quality", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
   CellQualityOptions quality_options;

@@ -11,6 +11,8 @@
 
 #include "quality/spheres.hpp"
 #include "vorocrust/cell_quality.hpp"
+
+#include "vorocrust/face_skewness.hpp"
 #include "vorocrust/error.hpp"
 
 namespace vorocrust {
@@ -163,6 +165,14 @@ CellQuality measure_cell_quality(const VoronoiMesh& mesh, const CellQualityOptio
                       [&](std::size_t c) { q.cells[c] = measure_cell(mesh, mesh.cells[c]); });
   });
   summarise(mesh, options, q);
+  std::vector<double> skewness(mesh.faces.size());
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, mesh.faces.size(), [&](std::size_t f) { skewness[f] = face_skewness(mesh, f); });
+  });
+  for (std::size_t f = 0; f < skewness.size(); ++f) {
+    if (skewness[f] > q.max_skewness) q.max_skewness = skewness[f], q.most_skew_face = f;
+    q.highly_skew_faces += skewness[f] > kHighSkewness;
+  }
   return q;
 }
 

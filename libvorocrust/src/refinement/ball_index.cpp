@@ -48,9 +48,21 @@ void BallIndex::reaching(StratumType type, const Point& p, double margin, std::v
       });
 }
 
-bool BallIndex::covers(const Point& p) const {
+void BallIndex::reaching_scaled(StratumType type, const Point& p, double scale, double margin,
+                                std::vector<std::uint32_t>& out) const {
+  trees_[static_cast<int>(type)].search(
+      p,
+      [&](double d2, double max_radius, std::uint32_t) {
+        return d2 < (scale * max_radius + margin) * (scale * max_radius + margin);
+      },
+      [&](const BallTree::Sphere& s) {
+        if ((s.centre - p).squaredNorm() < (scale * s.radius + margin) * (scale * s.radius + margin)) out.push_back(s.ball);
+      });
+}
+
+bool BallIndex::covers(const Point& p, double scale) const {
   for (int type = 0; type < 3; ++type) {
-    if (trees_[type].contains(p)) return true;
+    if (trees_[type].contains(p, scale)) return true;
   }
   return false;
 }

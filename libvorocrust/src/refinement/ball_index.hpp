@@ -36,8 +36,11 @@ class BallIndex {
   // margin 0, the balls containing p (A.4). Only balls numbered `first` or later, if given.
   void reaching(StratumType type, const Point& p, double margin, std::vector<std::uint32_t>& out,
                 std::uint32_t first = 0) const;
-  // Whether some ball of any type holds p strictly inside.
-  bool covers(const Point& p) const;
+  // Balls of `type` whose radius scaled by `scale` reaches within `margin` of `p`.
+  void reaching_scaled(StratumType type, const Point& p, double scale, double margin,
+                       std::vector<std::uint32_t>& out) const;
+  // Whether some ball of any type, its radius scaled by `scale`, holds p strictly inside.
+  bool covers(const Point& p, double scale = 1) const;
   // Balls of `type` too large beside a ball (p, radius) for C3: r_q > radius + L |p - q|.
   void lipschitz_violators(StratumType type, const Point& p, double radius, double L,
                            std::vector<std::uint32_t>& out) const;

@@ -138,7 +138,12 @@ json cell_quality_object(const CellQuality& q) {
            {{"definition", "shortest edge / cube root of the cell volume; 1 for a cube"},
             {"min", q.min_shortest_edge_relative},
             {"mean", q.mean_shortest_edge_relative},
-            {"cell", q.shortest_edge_cell}}}};
+            {"cell", q.shortest_edge_cell}}},
+          {"skewness",
+           {{"definition", "checkMesh's face skewness; above 4 it calls a face highly skew"},
+            {"max", q.max_skewness},
+            {"face", q.most_skew_face},
+            {"highly_skew_faces", q.highly_skew_faces}}}};
 }
 
 // The counts of a Voronoi mesh, with its quality when measured.
@@ -264,7 +269,9 @@ std::string run_report_json(const RunReport& report, int indent) {
                        {"darts", i.darts},                   {"spokes", i.spokes},
                        {"spoke_seeds", i.spoke_seeds},       {"lattice_seeds", i.lattice_seeds},
                        {"lipschitz_shrinks", i.lipschitz_shrinks}, {"rounds", i.rounds},
-                       {"cvt_iterations", i.cvt_iterations}, {"cvt_last_move", i.cvt_last_move}};
+                       {"cvt_iterations", i.cvt_iterations}, {"cvt_last_move", i.cvt_last_move},
+                       {"cap_seeds", i.cap_seeds},           {"repair_seeds", i.repair_seeds},
+                       {"repair_rounds", i.repair_rounds}};
     doc["cells"] = cells_object(m.cells, m.cell_quality ? &*m.cell_quality : nullptr);
   }
   if (report.mesh && report.input && report.validation) {

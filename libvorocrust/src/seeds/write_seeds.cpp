@@ -11,6 +11,7 @@ const char* to_string(SeedKind kind) noexcept {
     case SeedKind::Surface: return "surface";
     case SeedKind::Interior: return "interior";
     case SeedKind::Outside: return "outside";
+    case SeedKind::Cap: return "cap";
   }
   return "?";
 }

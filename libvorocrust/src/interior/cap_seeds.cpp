@@ -1,0 +1,146 @@
+// Seeds on the protecting spheres (paper 2.5, section 4).
+#include "interior/cap_seeds.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "geometry/ball_tree.hpp"
+#include "refinement/ball_index.hpp"
+#include "seeds/locate_regions.hpp"
+#include "vorocrust/face_skewness.hpp"
+
+namespace vorocrust {
+
+namespace {
+
+constexpr StratumType kTypes[] = {StratumType::Corner, StratumType::Crease, StratumType::Patch};
+// Two seeds placed on spheres stay this fraction of the ball's radius apart.
+constexpr double kSpacing = 0.1;
+// A material's seeds must agree on a direction this well (the length of their mean unit
+// vector) for a pole: seeds spread all round the sphere (a sheet with one material on both
+// sides) have no middle.
+constexpr double kMinimumMean = 0.02;
+
+// The balls on whose spheres p lies, to rounding.
+void spheres_through(const BallIndex& balls, const Point& p, double scale, std::vector<std::uint32_t>& out) {
+  out.clear();
+  std::vector<std::uint32_t> near;
+  for (StratumType type : kTypes) {
+    near.clear();
+    balls.reaching(type, p, 1e-6 * scale, near);
+    for (std::uint32_t b : near) {
+      const double d = (p - balls[b].site.position).norm();
+      if (std::abs(d - balls[b].radius) <= 1e-9 * balls[b].radius) out.push_back(b);
+    }
+  }
+  std::sort(out.begin(), out.end());
+}
+
+// Decides where a seed on a sphere may go, and remembers those placed.
+class SphereSeeds {
+ public:
+  SphereSeeds(const BallIndex& balls, const RegionLocator& regions) : balls_(balls), regions_(regions) {}
+
+  void remember(const Seed& s) { placed_.insert(s.position, kSpacing * s.radius, count_++); }
+
+  // The seed of material `region` at direction u (unit) on ball b's sphere, if it may go there.
+  std::optional<Seed> place(std::uint32_t b, const Point& u, std::int32_t region) {
+    const Point& centre = balls_[b].site.position;
+    const double r = balls_[b].radius;
+    const Point p = centre + r * u;
+    for (StratumType type : kTypes) {
+      near_.clear();
+      balls_.reaching(type, p, 0, near_);
+      for (std::uint32_t q : near_) {
+        if (q != b) return std::nullopt;  // inside another ball: it would cut into the surface
+      }
+    }
+    if (placed_.contains(p)) return std::nullopt;
+    if (regions_.region_of(p, u) != region) return std::nullopt;
+    Seed s{p, region, r, SeedKind::Cap};
+    remember(s);
+    return s;
+  }
+
+ private:
+  const BallIndex& balls_;
+  const RegionLocator& regions_;
+  BallTree placed_;
+  std::uint32_t count_ = 0;
+  std::vector<std::uint32_t> near_;
+};
+
+}  // namespace
+
+std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallIndex& balls,
+                             const RegionLocator& regions) {
+  struct Cap {
+    std::int32_t region;
+    Point sum;
+    int count;
+  };
+  std::vector<std::vector<Cap>> caps(balls.size());
+  std::vector<std::uint32_t> on;
+  for (const Seed& s : surface_seeds) {
+    if (s.region == kOutsideRegion) continue;
+    spheres_through(balls, s.position, s.radius, on);
+    for (std::uint32_t b : on) {
+      std::vector<Cap>& here = caps[b];
+      auto it = std::find_if(here.begin(), here.end(), [&](const Cap& c) { return c.region == s.region; });
+      if (it == here.end()) it = here.insert(here.end(), Cap{s.region, Point::Zero(), 0});
+      it->sum += (s.position - balls[b].site.position) / balls[b].radius;
+      ++it->count;
+    }
+  }
+  SphereSeeds place(balls, regions);
+  std::vector<Seed> poles;
+  for (std::uint32_t b = 0; b < balls.size(); ++b) {
+    for (const Cap& cap : caps[b]) {
+      const double length = cap.sum.norm();
+      if (!(length > kMinimumMean * cap.count)) continue;
+      if (const std::optional<Seed> pole = place.place(b, cap.sum / length, cap.region)) poles.push_back(*pole);
+    }
+  }
+  return poles;
+}
+
+std::vector<Seed> skew_repair_seeds(const VoronoiMesh& cells, const std::vector<Seed>& seeds, const BallIndex& balls,
+                                    const RegionLocator& regions, const std::vector<Seed>& placed) {
+  SphereSeeds place(balls, regions);
+  for (const Seed& s : placed) place.remember(s);
+  std::vector<Seed> added;
+  std::vector<std::uint32_t> a, b;
+  for (std::size_t f : skew_faces(cells)) {
+    const VoronoiFace& face = cells.faces[f];
+    if (face.neighbour == kNoCell) continue;
+    const std::int32_t region = cells.cells[face.owner].region;
+    if (cells.cells[face.neighbour].region != region) continue;
+    const FaceGeometry g = face_geometry(cells, f);
+    const Seed &s = seeds[face.owner_seed], &t = seeds[face.neighbour_seed];
+    spheres_through(balls, s.position, s.radius, a);
+    spheres_through(balls, t.position, t.radius, b);
+    // The spheres either seed lies on, those of both first (their centres lie on the face's
+    // plane), nearest to the face first; the first that takes a seed toward the face.
+    std::vector<std::pair<double, std::uint32_t>> candidates;
+    for (const auto* list : {&a, &b}) {
+      for (std::uint32_t q : *list) {
+        const bool both = std::binary_search(a.begin(), a.end(), q) && std::binary_search(b.begin(), b.end(), q);
+        if (!both && list == &b && std::binary_search(a.begin(), a.end(), q)) continue;  // listed once
+        candidates.emplace_back((both ? 0 : 1e300) + (balls[q].site.position - g.centroid).norm(), q);
+      }
+    }
+    std::sort(candidates.begin(), candidates.end());
+    for (const auto& [order, q] : candidates) {
+      const Point towards = g.centroid - balls[q].site.position;
+      if (!(towards.norm() > 0)) continue;
+      if (const std::optional<Seed> seed = place.place(q, towards.normalized(), region)) {
+        added.push_back(*seed);
+        break;
+      }
+    }
+  }
+  return added;
+}
+
+}  // namespace vorocrust
