@@ -10,12 +10,11 @@
 #include <string>
 
 #include "vorocrust/error.hpp"
+#include "vorocrust/merge_surfaces.hpp"
 
 namespace vorocrust::meshlab {
 
 namespace {
-
-using Coordinates = std::array<double, 3>;
 
 std::string layer_name(const MeshModel& layer) { return layer.label().toStdString(); }
 
@@ -27,9 +26,8 @@ std::string layer_source(const MeshModel& layer) {
 }  // namespace
 
 SurfaceMesh surface_from_layers(const std::vector<const MeshModel*>& layers) {
-  SurfaceMesh surface;
-  // Vertices of the layers already converted, by exact coordinates: the first one wins.
-  std::map<Coordinates, Index> earlier;
+  std::vector<NamedSurface> parts;
+  std::vector<std::string> group_names;  // every part's, in order: merging renames them
   for (const MeshModel* layer : layers) {
     const CMeshO& cm = layer->cm;
     const std::string name = layer_name(*layer);
@@ -38,30 +36,21 @@ SurfaceMesh surface_from_layers(const std::vector<const MeshModel*>& layers) {
                   "layer \"" + name + "\" has no faces: VoroCrust meshes the volume a triangle surface bounds",
                   {.file = layer_source(*layer)});
     }
-
-    // The model's index of each of the layer's vertices (by position in cm.vert).
+    SurfaceMesh surface;
+    // The layer's index of each of its vertices (by position in cm.vert).
     constexpr Index kNone = std::numeric_limits<Index>::max();
     std::vector<Index> index(cm.vert.size(), kNone);
-    const std::size_t first_new = surface.vertices.size();
     for (std::size_t v = 0; v < cm.vert.size(); ++v) {
       if (cm.vert[v].IsD()) continue;
       const auto& p = cm.vert[v].cP();
-      const Coordinates c{double(p[0]), double(p[1]), double(p[2])};
-      if (!std::isfinite(c[0]) || !std::isfinite(c[1]) || !std::isfinite(c[2])) {
+      const Point c{static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2])};
+      if (!c.allFinite()) {
         throw Error(Error::Kind::InvalidGeometry,
                     "vertex " + std::to_string(v) + " of layer \"" + name + "\" has a NaN or infinite coordinate",
                     {.file = layer_source(*layer)});
       }
-      if (const auto found = earlier.find(c); found != earlier.end()) {
-        index[v] = found->second;
-      } else {
-        index[v] = static_cast<Index>(surface.vertices.size());
-        surface.vertices.emplace_back(c[0], c[1], c[2]);
-      }
-    }
-    for (std::size_t v = first_new; v < surface.vertices.size(); ++v) {
-      const Point& p = surface.vertices[v];
-      earlier.emplace(Coordinates{p.x(), p.y(), p.z()}, static_cast<Index>(v));
+      index[v] = static_cast<Index>(surface.vertices.size());
+      surface.vertices.push_back(c);
     }
 
     // One group per selection state that has faces, made on first use.
@@ -70,6 +59,7 @@ SurfaceMesh surface_from_layers(const std::vector<const MeshModel*>& layers) {
       if (!group[selected]) {
         group[selected] = static_cast<Index>(surface.groups.size());
         surface.groups.push_back({selected ? name + "/selected" : name, layer_source(*layer)});
+        group_names.push_back(surface.groups.back().name);
       }
       return *group[selected];
     };
@@ -87,8 +77,13 @@ SurfaceMesh surface_from_layers(const std::vector<const MeshModel*>& layers) {
       }
       surface.add_triangle(t, group_of(face.IsS()));
     }
+    parts.push_back({name, std::move(surface)});
   }
-  return surface;
+  // Layers merge as input files do: shared vertices, a face two closed layers share one
+  // interface between their solids, each closed layer a material named after it.
+  SurfaceMesh merged = merge_surfaces(parts);
+  for (std::size_t g = 0; g < merged.groups.size(); ++g) merged.groups[g].name = group_names[g];
+  return merged;
 }
 
 }  // namespace vorocrust::meshlab

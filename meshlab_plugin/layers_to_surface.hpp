@@ -15,9 +15,10 @@ namespace vorocrust::meshlab {
 // layer's transformation matrix is not applied, as MeshLab's own filters do not apply it.
 //
 // Vertices: every live vertex of each layer, in the layer's order, so a single layer keeps
-// MeshLab's vertex numbering when it has no deleted vertex. A vertex of a later layer with
-// exactly the coordinates of one of an earlier layer is shared, as vorocrust::read_meshes does
-// for several files, so layers that touch along common faces stay connected.
+// MeshLab's vertex numbering when it has no deleted vertex. Several layers merge as
+// vorocrust::merge_surfaces merges input files: a vertex of a later layer with exactly the
+// coordinates of one of an earlier layer is shared, a face two layers share is one face, and
+// a layer that is one closed surface is a solid, the material named after the layer.
 //
 // Face groups keep the face selection: a layer's unselected faces form the group named after
 // the layer, its selected faces the group "LAYER/selected"; a group is made only when it has

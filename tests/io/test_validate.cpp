@@ -94,8 +94,8 @@ TEST(Validate, FlippingSwapsRegionLabels) {
   for (const RegionPair& r : m.face_regions) EXPECT_EQ(r, (RegionPair{0, 1}));
 }
 
-TEST(Validate, FacesSharedByTwoFilesAreANoteNotAnError) {
-  // Merging keeps one copy of a face two files share; a mesh built otherwise may hold both.
+TEST(Validate, FacesTwoPartsBothHoldAreAnError) {
+  // Merging keeps one copy of a face two files share; a mesh put together otherwise may hold both.
   SurfaceMesh m = read_mesh(test::data("invalid/cube.off"));
   m.groups.push_back({"twin", "twin.off"});
   const std::size_t n = m.num_faces();
@@ -107,7 +107,9 @@ TEST(Validate, FacesSharedByTwoFilesAreANoteNotAnError) {
   const ValidationReport r = validate(m, {.fix_orientation = false});
   const Finding* shared = r.find("shared-face");
   ASSERT_NE(shared, nullptr);
+  EXPECT_EQ(shared->severity, Finding::Severity::Error);
   EXPECT_EQ(shared->count, 12u);
+  EXPECT_NE(shared->message.find("merge_surfaces"), std::string::npos);
   EXPECT_EQ(r.find("duplicate-face"), nullptr);
 }
 

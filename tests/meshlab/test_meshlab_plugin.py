@@ -24,6 +24,7 @@ Cases:
 Run by CTest as: python3 test_meshlab_plugin.py CASE [MODEL] --plugin ... (see parse_arguments).
 """
 import argparse
+import collections
 import json
 import math
 import os
@@ -40,7 +41,7 @@ STRATUM_COLOURS = {"corner": (220, 40, 40), "crease": (235, 190, 40), "patch": (
 
 def parse_arguments():
     p = argparse.ArgumentParser()
-    p.add_argument("case", choices=["balls", "invalid", "voronoi-surface", "voronoi-vtu"])
+    p.add_argument("case", choices=["balls", "invalid", "voronoi-surface", "voronoi-vtu", "voronoi-layers"])
     p.add_argument("model", nargs="?")
     p.add_argument("--plugin", required=True, help="libfilter_vorocrust.so under test")
     p.add_argument("--meshlabserver", required=True, help="the installed meshlabserver")
@@ -185,6 +186,20 @@ def enclosed_volume(vertices, faces):
     return total / 6
 
 
+def region_volumes(ply):
+    """The volume of each region a surface.ply's faces bound: a face's normal points from its
+    back region to its front one, so it adds its signed volume to the back's and takes it from
+    the front's (the outside's, label 0, is left out)."""
+    vertices = [(v["x"], v["y"], v["z"]) for v in ply["vertex"]]
+    volumes = collections.defaultdict(float)
+    for f in ply["face"]:
+        v = enclosed_volume(vertices, [f["vertex_indices"]])
+        volumes[f["back_region"]] += v
+        volumes[f["front_region"]] -= v
+    volumes.pop(0, None)
+    return dict(volumes)
+
+
 def read_balls_csv(path):
     return read_csv_rows(path, ["x", "y", "z", "radius", "stratum_type", "stratum_index"])
 
@@ -241,11 +256,11 @@ def balls_script(path, seed=SEED, lipschitz=0.25):
                   maxSize=("abs", 0.0), seed=seed)
 
 
-def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20):
+def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20, all_visible=False):
     return script(path, "VoroCrust Voronoi Mesh", lipschitz=0.25, sharpAngle=30.0, maxSize=("abs", 0.0), seed=seed,
                   interior=("enum", 0), cvtIterations=cvt_iterations, outputFolder=folder, writeVtu=vtu,
                   writeOpenFoam=openfoam, writeTough=openfoam, writePflotran=openfoam, writeSeeds=True,
-                  writeSurface=True, allVisibleLayers=False)
+                  writeSurface=True, allVisibleLayers=all_visible)
 
 
 class MeshLabCase(unittest.TestCase):
@@ -408,6 +423,39 @@ class MeshLabCase(unittest.TestCase):
         status, output = self.meshlabserver("-i", model, "-o", os.path.join(self.work, "surface_layer.ply"),
                                             "-l", "1", "-s", mlx)
         self.assertEqual(status, 0, output[-3000:])
+        self.check_vtu(folder)
+
+    def case_voronoi_layers(self):
+        """All visible layers as materials: two unit cubes side by side, one layer each, meshed
+        together; their common face is the interface between their materials."""
+        cubes = []
+        for k in range(2):
+            path = os.path.join(self.work, "cube%d.off" % k)
+            corners = [(k + (i & 1), (i >> 1) & 1, (i >> 2) & 1) for i in range(8)]
+            quads = [(0, 4, 6, 2), (1, 3, 7, 5), (0, 1, 5, 4), (2, 6, 7, 3), (0, 2, 3, 1), (4, 5, 7, 6)]
+            with open(path, "w") as f:
+                f.write("OFF\n8 12 0\n" + "".join("%d %d %d\n" % c for c in corners))
+                for a, b, c, d in quads:
+                    f.write("3 %d %d %d\n3 %d %d %d\n" % (a, b, c, a, c, d))
+            cubes.append(path)
+        folder = os.path.join(self.work, "voronoi")
+        mlx = voronoi_script(os.path.join(self.work, "voronoi.mlx"), folder, vtu=True, openfoam=True, all_visible=True)
+        status, output = self.meshlabserver("-i", *cubes, "-s", mlx)
+        self.assertEqual(status, 0, output[-3000:])
+        volumes = self.check_vtu(folder)
+        self.assertEqual(len(volumes), 2, volumes)
+        for material, volume in volumes.items():
+            self.assertAlmostEqual(volume, 1.0, delta=1e-9, msg=f"material {material}")
+        surface = read_ply(os.path.join(folder, "surface.ply"))
+        between = [f for f in surface["face"] if f["back_region"] > 0 and f["front_region"] > 0]
+        self.assertGreaterEqual(len(between), 2)
+        for name in ("MESH", "pflotran/mesh.uge", "case/constant/polyMesh/faceZones"):
+            self.assertTrue(os.path.exists(os.path.join(folder, name)), name)
+        print(f"two cube layers: materials of volume {sorted(volumes.values())}, {len(between)} interface triangles")
+
+    def check_vtu(self, folder):
+        """VTK reads mesh.vtu; its cells' volumes per material are the regions' volumes inside the
+        output surface, and VTK's volume inside its outer faces their sum. Returns the volumes."""
         import vtk  # python3-vtk9; imported here so the cases without cells need no VTK
         reader = vtk.vtkXMLUnstructuredGridReader()
         reader.SetFileName(os.path.join(folder, "mesh.vtu"))
@@ -417,20 +465,25 @@ class MeshLabCase(unittest.TestCase):
         material = [k for k, row in enumerate(seeds) if int(row[3]) > 0]
         self.assertEqual(grid.GetNumberOfCells(), len(material))
         self.assertEqual({grid.GetCellType(c) for c in range(grid.GetNumberOfCells())}, {vtk.VTK_POLYHEDRON})
-        # VTK's volume inside the grid's outer faces, and the cells' own volumes.
+        # VTK's volume inside the grid's outer faces, and the cells' own volumes per material.
         sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
         from vtk_volume import vtk_boundary_volume
         measured = vtk_boundary_volume(grid)
         own = grid.GetCellData().GetArray("volume")
-        own_total = sum(own.GetValue(c) for c in range(own.GetNumberOfTuples()))
-        surface = read_ply(os.path.join(folder, "surface.ply"))
-        enclosed = enclosed_volume([(v["x"], v["y"], v["z"]) for v in surface["vertex"]],
-                                   [f["vertex_indices"] for f in surface["face"]])
+        materials = grid.GetCellData().GetArray("material")
+        by_material = collections.defaultdict(float)
+        for c in range(own.GetNumberOfTuples()):
+            by_material[materials.GetValue(c)] += own.GetValue(c)
+        regions = region_volumes(read_ply(os.path.join(folder, "surface.ply")))
+        self.assertEqual(sorted(by_material), sorted(regions))
+        enclosed = sum(regions.values())
         self.assertGreater(enclosed, 0)
         self.assertAlmostEqual(measured, enclosed, delta=1e-9 * enclosed)
-        self.assertAlmostEqual(own_total, enclosed, delta=1e-9 * enclosed)
-        print(f"{ARGS.model}: VTK reads {grid.GetNumberOfCells()} polyhedra of total volume {measured:.9g}; "
-              f"the output surface encloses {enclosed:.9g}")
+        for material, volume in by_material.items():
+            self.assertAlmostEqual(volume, regions[material], delta=1e-9 * enclosed, msg=f"material {material}")
+        print(f"{ARGS.model}: VTK reads {grid.GetNumberOfCells()} polyhedra of total volume {measured:.9g}; the "
+              f"output surface encloses {enclosed:.9g}, per material {dict(sorted(by_material.items()))}")
+        return dict(by_material)
 
     def case_invalid(self):
         mlx = balls_script(os.path.join(self.work, "balls.mlx"))

@@ -67,8 +67,7 @@ void check_zero_area(const SurfaceMesh& mesh, const ValidationOptions& options, 
   }
 }
 
-// Faces with the same three corners. Within one file they are an error; between two input files
-// they are the common face of two solids, which later becomes an interface.
+// Faces with the same three corners, within one file or between two.
 void check_duplicates(const SurfaceMesh& mesh, const ValidationOptions& options, ValidationReport& report) {
   std::vector<std::pair<Triangle, std::size_t>> keyed(mesh.triangles.size());
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
@@ -88,10 +87,14 @@ void check_duplicates(const SurfaceMesh& mesh, const ValidationOptions& options,
     report.findings.push_back(pair_finding(mesh, Finding::Severity::Error, "duplicate-face",
                                            "pairs of duplicate faces (same three corners)", within, options.max_listed));
   }
+  // read_meshes() and merge_surfaces() keep one copy of a face two parts share, the interface
+  // between their solids; two copies left (parts put together otherwise) would be two faces on
+  // one triangle, which the refinement cannot cover.
   if (!between.empty()) {
-    report.findings.push_back(pair_finding(mesh, Finding::Severity::Note, "shared-face",
-                                           "faces shared by two input files (they become interfaces)", between,
-                                           options.max_listed));
+    report.findings.push_back(pair_finding(mesh, Finding::Severity::Error, "shared-face",
+                                           "pairs of faces on one triangle from two parts (merge the parts with "
+                                           "merge_surfaces, which keeps one face between their solids)",
+                                           between, options.max_listed));
   }
 }
 
