@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cells/cell_faces.hpp"
+#include "cells/growing_cells.hpp"
 #include "cells/voronoi_cells.hpp"
 #include "cells/weld_vertices.hpp"
 #include "vorocrust/cells.hpp"
@@ -45,7 +46,8 @@ void check_seeds(const std::vector<Seed>& seeds, const std::vector<std::int32_t>
   }
 }
 
-// Cells are computed with the seeds about one unit apart, the scale of Voro++'s tolerances.
+// Cells are computed with the seeds about one unit apart, the scale of Voro++'s tolerances. The
+// scale is a power of two, so that a few seeds more leave the frame as it was (GrowingCells).
 cells::Frame make_frame(const std::vector<Seed>& seeds) {
   cells::Frame frame;
   Eigen::AlignedBox3d box;
@@ -53,7 +55,8 @@ cells::Frame make_frame(const std::vector<Seed>& seeds) {
   frame.centre = box.center();
   const double n = static_cast<double>(seeds.size());
   const double spacing = std::cbrt(box.volume() / n);
-  frame.scale = spacing > 0 ? spacing : box.diagonal().norm() > 0 ? box.diagonal().norm() / n : 1.0;
+  const double scale = spacing > 0 ? spacing : box.diagonal().norm() > 0 ? box.diagonal().norm() / n : 1.0;
+  frame.scale = std::exp2(std::round(std::log2(scale)));
   frame.original.reserve(seeds.size());
   frame.normalized.reserve(seeds.size());
   for (const Seed& s : seeds) {
@@ -198,24 +201,66 @@ void measure_cells(VoronoiMesh& mesh) {
 
 }  // namespace
 
-VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options) {
-  std::vector<Index> cell_seeds;
-  std::vector<std::int32_t> cell_of_seed(seeds.size(), kNoCell);
-  for (std::size_t s = 0; s < seeds.size(); ++s) {
-    if (!is_material(seeds[s].region, options.materials)) continue;
-    cell_of_seed[s] = static_cast<std::int32_t>(cell_seeds.size());
-    cell_seeds.push_back(static_cast<Index>(s));
-  }
-  if (cell_seeds.empty()) {
+namespace cells {
+
+GrowingCells::GrowingCells(const std::vector<Seed>& seeds, const CellsOptions& options)
+    : seeds_(seeds), options_(options), cell_of_seed_(seeds.size(), kNoCell) {
+  for (std::size_t s = 0; s < seeds.size(); ++s) add_cell(s);
+  if (cell_seeds_.empty()) {
     throw Error(Error::Kind::InvalidGeometry, "no seed has a material region, so there is no cell to make");
   }
-  check_seeds(seeds, cell_of_seed);
+  check_seeds(seeds_, cell_of_seed_);
+  cut_all();
+}
 
-  VoronoiMesh mesh;
-  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+void GrowingCells::add_cell(std::size_t s) {
+  if (!is_material(seeds_[s].region, options_.materials)) return;
+  cell_of_seed_[s] = static_cast<std::int32_t>(cell_seeds_.size());
+  cell_seeds_.push_back(static_cast<Index>(s));
+}
+
+void GrowingCells::cut_all() {
+  tbb::task_arena arena(options_.threads > 0 ? options_.threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    const cells::Frame frame = make_frame(seeds);
-    std::vector<cells::RawCell> raw = cells::compute_voronoi_cells(frame.normalized, cell_seeds);
+    frame_ = make_frame(seeds_);
+    raw_ = compute_voronoi_cells(frame_.normalized, cell_seeds_);
+  });
+}
+
+void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
+  const std::size_t old_count = seeds_.size();
+  if (seeds.size() < old_count) throw Error(Error::Kind::Internal, "GrowingCells: seeds may only be added");
+  if (seeds.size() == old_count) return;
+  seeds_.insert(seeds_.end(), seeds.begin() + static_cast<std::ptrdiff_t>(old_count), seeds.end());
+  cell_of_seed_.resize(seeds_.size(), kNoCell);
+  const std::size_t old_cells = cell_seeds_.size();
+  for (std::size_t s = old_count; s < seeds_.size(); ++s) add_cell(s);
+  check_seeds(seeds_, cell_of_seed_);
+  Frame frame = make_frame(seeds_);
+  if (frame.centre != frame_.centre || frame.scale != frame_.scale) {  // another frame: every cell changes
+    cut_all();
+    return;
+  }
+  frame_ = std::move(frame);
+  tbb::task_arena arena(options_.threads > 0 ? options_.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    std::vector<Index> added(seeds_.size() - old_count);
+    std::iota(added.begin(), added.end(), static_cast<Index>(old_count));
+    std::vector<std::size_t> which = cells_reached(frame_.normalized, cell_seeds_, raw_, added);
+    for (std::size_t c = old_cells; c < cell_seeds_.size(); ++c) which.push_back(c);
+    raw_.resize(cell_seeds_.size());
+    recompute_voronoi_cells(frame_.normalized, cell_seeds_, which, 0, raw_);
+  });
+}
+
+VoronoiMesh GrowingCells::mesh() const {
+  VoronoiMesh mesh;
+  tbb::task_arena arena(options_.threads > 0 ? options_.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    const Frame& frame = frame_;
+    const std::vector<Index>& cell_seeds = cell_seeds_;
+    const std::vector<std::int32_t>& cell_of_seed = cell_of_seed_;
+    std::vector<RawCell> raw = raw_;  // the fallbacks below cut some again, for this mesh only
     // Where cells disagree after welding, nearly cospherical seeds left a vertex split on one side
     // only, or round-off a tiny feature: those cells and their neighbours are cut again, first in
     // Voro++'s containers, then from bigger initial cubes, and the tolerance rises, to 1e-6 of the
@@ -223,11 +268,11 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
     constexpr double kTolerances[] = {1e-9, 1e-9, 1e-8, 1e-7, 1e-6};
     constexpr int kAttempts = static_cast<int>(std::size(kTolerances));
     for (int attempt = 0;; ++attempt) {
-      cells::WeldedVertices welded = cells::weld_vertices(raw, cell_seeds, cell_of_seed, frame, kTolerances[attempt]);
-      Assembly assembly{seeds, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
+      WeldedVertices welded = weld_vertices(raw, cell_seeds, cell_of_seed, frame, kTolerances[attempt]);
+      Assembly assembly{seeds_, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
       std::vector<char> failed(raw.size(), 0);
       tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
-        std::optional<CellFaces> f = cells::welded_faces(raw[c], welded.first_instance[c], welded.point_of);
+        std::optional<CellFaces> f = welded_faces(raw[c], welded.first_instance[c], welded.point_of);
         if (f) assembly.faces[c] = std::move(*f);
         else failed[c] = 1;
       });
@@ -257,16 +302,22 @@ VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& op
       if (attempt == 0) {
         std::vector<Index> subset(which.size());
         for (std::size_t k = 0; k < which.size(); ++k) subset[k] = cell_seeds[which[k]];
-        std::vector<cells::RawCell> redone = cells::compute_voronoi_cells_in_containers(frame.normalized, subset);
+        std::vector<RawCell> redone = compute_voronoi_cells_in_containers(frame.normalized, subset);
         for (std::size_t k = 0; k < which.size(); ++k) raw[which[k]] = std::move(redone[k]);
       } else {
-        cells::recompute_voronoi_cells(frame.normalized, cell_seeds, which, attempt, raw);
+        recompute_voronoi_cells(frame.normalized, cell_seeds, which, attempt, raw);
       }
     }
     drop_unused_points(mesh);
     measure_cells(mesh);
   });
   return mesh;
+}
+
+}  // namespace cells
+
+VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options) {
+  return cells::GrowingCells(seeds, options).mesh();
 }
 
 std::size_t count_interior_faces(const VoronoiMesh& mesh) {

@@ -9,6 +9,7 @@
 #include <numeric>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <voro++.hh>
 
 #include "refinement/point_cloud.hpp"
@@ -22,7 +23,58 @@ struct Scratch {
   std::vector<int> faces, ids;
   std::vector<std::uint32_t> near;
   std::vector<double> distance2;
+  std::vector<std::uint32_t> order, rank, faces_order;
 };
+
+// Voro++ numbers a cell's vertices and faces in the order its cuts met them, and a cut that
+// changes nothing can still move where the next one starts. Numbered by position (vertices
+// lexicographically, faces by the seed across them, each cycle from its lowest vertex), a cell is
+// the same whichever seeds were cut in vain, so cells cut again after seeds were added match
+// cells cut among all of them.
+void canonicalize(RawCell& cell, Scratch& scratch) {
+  const std::size_t n = cell.vertices.size();
+  std::vector<std::uint32_t>& order = scratch.order;
+  order.resize(n);
+  std::iota(order.begin(), order.end(), 0u);
+  const auto less = [&](std::uint32_t a, std::uint32_t b) {
+    const Point &p = cell.vertices[a], &q = cell.vertices[b];
+    return std::tie(p.x(), p.y(), p.z(), a) < std::tie(q.x(), q.y(), q.z(), b);
+  };
+  std::sort(order.begin(), order.end(), less);
+  std::vector<std::uint32_t>& rank = scratch.rank;
+  rank.resize(n);
+  for (std::uint32_t k = 0; k < n; ++k) rank[order[k]] = k;
+  std::vector<Point> vertices(n);
+  for (std::uint32_t k = 0; k < n; ++k) vertices[k] = cell.vertices[order[k]];
+  cell.vertices.swap(vertices);
+
+  const std::size_t faces = cell.neighbours.size();
+  std::vector<std::uint32_t>& by_neighbour = scratch.faces_order;
+  by_neighbour.resize(faces);
+  std::iota(by_neighbour.begin(), by_neighbour.end(), 0u);
+  std::sort(by_neighbour.begin(), by_neighbour.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::tie(cell.neighbours[a], a) < std::tie(cell.neighbours[b], b);
+  });
+  std::vector<std::int32_t> neighbours(faces);
+  std::vector<std::uint32_t> starts, cycles;
+  starts.reserve(faces + 1);
+  cycles.reserve(cell.cycles.size());
+  for (std::size_t k = 0; k < faces; ++k) {
+    const std::uint32_t f = by_neighbour[k];
+    neighbours[k] = cell.neighbours[f];
+    starts.push_back(static_cast<std::uint32_t>(cycles.size()));
+    const std::uint32_t begin = cell.starts[f], size = cell.starts[f + 1] - begin;
+    std::uint32_t first = 0;
+    for (std::uint32_t j = 1; j < size; ++j) {
+      if (rank[cell.cycles[begin + j]] < rank[cell.cycles[begin + first]]) first = j;
+    }
+    for (std::uint32_t j = 0; j < size; ++j) cycles.push_back(rank[cell.cycles[begin + (first + j) % size]]);
+  }
+  starts.push_back(static_cast<std::uint32_t>(cycles.size()));
+  cell.neighbours.swap(neighbours);
+  cell.starts.swap(starts);
+  cell.cycles.swap(cycles);
+}
 
 // A Voro++ cell of the seed at p as a RawCell.
 void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cell, Scratch& scratch) {
@@ -42,6 +94,7 @@ void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cel
     for (int k = faces[at]; k >= 1; --k) cell.cycles.push_back(static_cast<std::uint32_t>(faces[at + static_cast<std::size_t>(k)]));
   }
   cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
+  canonicalize(cell, scratch);
 }
 
 // Cells per slab: enough for containers to pay off, few enough that two threads share the work
@@ -204,9 +257,13 @@ std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, 
   return cells;
 }
 
-void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
-                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells) {
-  if (which.empty()) return;
+namespace {
+
+// Cuts cells[k] for k < count, the cell of seed_of(k), and returns the lowest seed whose cell kept a
+// wall of the initial cube (max() when none did).
+template <class SeedOf, class CellOf>
+Index cut_each(const std::vector<Point>& positions, std::size_t count, SeedOf seed_of, CellOf cell_of, int variant) {
+  if (count == 0) return std::numeric_limits<Index>::max();
   const Cloud cloud{&positions};
   StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   Eigen::AlignedBox3d bounds;
@@ -214,13 +271,13 @@ void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vec
   // The initial cell: a cube about each seed bigger than all seeds, so that only a cell no seed
   // bounds keeps one of its walls.
   const double reach = (bounds.diagonal().norm() + 1) * std::pow(1.375, variant);
-  std::vector<Index> unbounded(which.size(), std::numeric_limits<Index>::max());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 256), [&](const auto& range) {
+  std::vector<Index> unbounded(count, std::numeric_limits<Index>::max());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256), [&](const auto& range) {
     voro::voronoicell_neighbor cell;
     Scratch scratch;
+    std::vector<std::pair<double, std::uint32_t>> order;
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
-      const std::size_t c = which[k];
-      const Index seed = cell_seeds[c];
+      const Index seed = seed_of(k);
       const Point& p = positions[seed];
       cell.init(-reach, reach, -reach, reach, -reach, reach);
       std::size_t cut = 0;  // seeds cut so far, nearest first
@@ -229,28 +286,74 @@ void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vec
         scratch.near.resize(wanted);
         scratch.distance2.resize(wanted);
         const std::size_t found = tree.knnSearch(p.data(), wanted, scratch.near.data(), scratch.distance2.data());
-        for (; cut < found; ++cut) {
-          const std::uint32_t other = scratch.near[cut];
+        // The cut order must not depend on the tree (a cell cut again after seeds were added must
+        // come out as it would among all of them): by distance, then by seed, and only the seeds
+        // nearer than the farthest found, which are certainly all there are that near.
+        const bool all = found == positions.size();
+        const double farthest = found > 0 ? scratch.distance2[found - 1] : 0;
+        order.clear();
+        for (std::size_t j = 0; j < found; ++j) {
+          if (all || scratch.distance2[j] < farthest) order.emplace_back(scratch.distance2[j], scratch.near[j]);
+        }
+        std::sort(order.begin(), order.end());
+        for (; cut < order.size(); ++cut) {
+          const std::uint32_t other = order[cut].second;
           if (other == seed) continue;
           const Point d = positions[other] - p;
           cell.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(other));
         }
         // A seed at distance d cuts the cell only if d / 2 is below its farthest vertex, whose
         // doubled distance Voro++'s max_radius_squared gives.
-        if (found == positions.size() || scratch.distance2[found - 1] > cell.max_radius_squared()) break;
+        if (all || farthest > cell.max_radius_squared()) break;
       }
-      extract(cell, p, cells[c], scratch);
-      for (const std::int32_t n : cells[c].neighbours) {
+      RawCell& out = cell_of(k);
+      extract(cell, p, out, scratch);
+      for (const std::int32_t n : out.neighbours) {
         if (n < 0) unbounded[k] = seed;
       }
     }
   });
-  const Index worst = *std::min_element(unbounded.begin(), unbounded.end());
+  return *std::min_element(unbounded.begin(), unbounded.end());
+}
+
+}  // namespace
+
+void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells) {
+  const Index worst = cut_each(
+      positions, which.size(), [&](std::size_t k) { return cell_seeds[which[k]]; },
+      [&](std::size_t k) -> RawCell& { return cells[which[k]]; }, variant);
   if (worst != std::numeric_limits<Index>::max()) {
     throw Error(Error::Kind::InvalidGeometry,
                 "cell of seed " + std::to_string(worst) + " is not bounded by seeds: the seeds do not enclose the "
                 "materials (seeds of no material must surround them)");
   }
+}
+
+std::vector<std::size_t> cells_reached(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                                       const std::vector<RawCell>& cells, const std::vector<Index>& added) {
+  std::vector<Point> added_positions;
+  for (Index s : added) added_positions.push_back(positions[s]);
+  const Cloud cloud{&added_positions};
+  StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(8));
+  std::vector<char> reached(cells.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 512), [&](const auto& range) {
+    std::vector<std::pair<std::uint32_t, double>> near;
+    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+      const Point& p = positions[cell_seeds[c]];
+      double farthest2 = 0;
+      for (const Point& v : cells[c].vertices) farthest2 = std::max(farthest2, (v - p).squaredNorm());
+      // The cut meets every seed up to twice the farthest vertex away, and even one that leaves
+      // the cell as it is can change how the later cuts round.
+      near.clear();
+      reached[c] = tree.radiusSearch(p.data(), 4 * farthest2 * (1 + 1e-9) + 1e-9, near, nanoflann::SearchParams()) > 0;
+    }
+  });
+  std::vector<std::size_t> out;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    if (reached[c]) out.push_back(c);
+  }
+  return out;
 }
 
 std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds) {

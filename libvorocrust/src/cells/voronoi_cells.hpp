@@ -7,7 +7,7 @@
 // round-off or by a tiny edge: welding is the caller's job.
 //
 // Each cell is cut alone from a cube bigger than all seeds by the bisector planes of the other
-// seeds, nearest first (a k-d tree gives them), until the next seed is farther than twice the
+// seeds, nearest first (a k-d tree gives them; ties by seed index), until the next seed is farther than twice the
 // cell's farthest vertex. Voro++'s containers were the first choice, but their uniform grid
 // suits VoroCrust's seeds badly: thin layers of surface seeds, sparse interior seeds and outside
 // seeds spread over a box three times the model's crowd some blocks and empty others
@@ -52,5 +52,12 @@ std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point
 // another cube round otherwise, which is all the assembly needs to try again.
 void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
                              const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells);
+
+// The cells (indices into `cells`, the cells of `cell_seeds`) within whose reach the seeds
+// `added` lie: nearer to the cell's seed than twice its farthest vertex, where
+// compute_voronoi_cells would have cut them. The other cells it would cut among all positions
+// exactly as they are, since their cut order does not depend on the seeds' k-d tree.
+std::vector<std::size_t> cells_reached(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                                       const std::vector<RawCell>& cells, const std::vector<Index>& added);
 
 }  // namespace vorocrust::cells

@@ -255,7 +255,9 @@ class InteriorSampler {
     covered.clear();
     for (const BallTree::Sphere& s : spheres) {
       const auto [a, b] = chord(z, d, s.centre, s.radius);
-      if (a < b && b > t_lo && a < t_hi) covered.emplace_back(std::max(a, t_lo), std::min(b, t_hi));
+      if (!(a < b && b > t_lo && a < t_hi)) continue;
+      if (a <= t_lo && b >= t_hi) return std::nullopt;  // one sphere covers it all: most spokes end here
+      covered.emplace_back(std::max(a, t_lo), std::min(b, t_hi));
     }
     std::sort(covered.begin(), covered.end());
     // The free intervals between the merged covered ones, then the point at fraction u of their length.

@@ -1,7 +1,9 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
+#include "cells/growing_cells.hpp"
 #include "features/smooth_patches.hpp"
 #include "features/strata.hpp"
 #include "interior/cap_seeds.hpp"
@@ -171,9 +173,13 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   if (progress && !progress({"cells", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
   CellsOptions cells_options;
   cells_options.threads = options.threads;
-  result.cells = clock("cells", [&] { return compute_cells(result.seeds, cells_options); });
-  // Faces still highly skew about a ball's centre get a seed on its sphere, and the cells are
-  // computed again, a few rounds at most (interior/cap_seeds.hpp).
+  std::optional<cells::GrowingCells> cells;
+  result.cells = clock("cells", [&] {
+    cells.emplace(result.seeds, cells_options);
+    return cells->mesh();
+  });
+  // Faces still highly skew about a ball's centre get a seed on its sphere, and the cells about
+  // the new seeds are cut again, a few rounds at most (interior/cap_seeds.hpp).
   constexpr int kRepairRounds = 3;
   for (int round = 0; round < kRepairRounds; ++round) {
     if (progress && !progress({"skew repair", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
@@ -185,7 +191,10 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
     result.interior.repair_seeds += repairs.size();
     caps.insert(caps.end(), repairs.begin(), repairs.end());
     result.seeds.insert(result.seeds.end(), repairs.begin(), repairs.end());
-    result.cells = clock("cells", [&] { return compute_cells(result.seeds, cells_options); });
+    result.cells = clock("cells", [&] {
+      cells->add_seeds(result.seeds);
+      return cells->mesh();
+    });
   }
   for (const Seed& s : result.seeds) {
     if (s.kind == SeedKind::Outside) ++result.interior.outside_seeds;

@@ -1,0 +1,43 @@
+// cells/growing_cells.hpp — the cells of a seed set that grows at its end, cut again only where
+// the new seeds reach.
+//
+// GrowingCells(seeds, options) cuts the cell of every material seed (options.materials) and
+// checks the seeds as compute_cells does. add_seeds(seeds), given the seeds it has followed by
+// new ones, cuts the new seeds' cells and, of the others, only those across a new seed's faces:
+// a new seed changes exactly the cells it cuts. mesh() welds and assembles the cells as they
+// stand. The skew repair adds a few dozen seeds to tens of thousands, so it pays for the new
+// seeds' neighbourhoods, not for all the cells again.
+//
+// mesh() is compute_cells(seeds, options) for the seeds as they stand, bit for bit: cells are
+// cut in a frame that a few seeds more do not change (a power-of-two scale about the box of the
+// seeds; when either changes, add_seeds cuts every cell again) and in an order that does not
+// depend on the seeds' k-d tree (voronoi_cells.hpp).
+#pragma once
+
+#include <vector>
+
+#include "cells/voronoi_cells.hpp"
+#include "cells/weld_vertices.hpp"
+#include "vorocrust/cells.hpp"
+
+namespace vorocrust::cells {
+
+class GrowingCells {
+ public:
+  GrowingCells(const std::vector<Seed>& seeds, const CellsOptions& options);
+  void add_seeds(const std::vector<Seed>& seeds);
+  VoronoiMesh mesh() const;
+
+ private:
+  void add_cell(std::size_t seed);
+  void cut_all();
+
+  std::vector<Seed> seeds_;
+  CellsOptions options_;
+  Frame frame_;
+  std::vector<Index> cell_seeds_;
+  std::vector<std::int32_t> cell_of_seed_;  // per seed: its cell, or kNoCell
+  std::vector<RawCell> raw_;                // per cell, as cut (mesh() cuts its fallbacks apart)
+};
+
+}  // namespace vorocrust::cells

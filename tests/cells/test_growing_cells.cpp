@@ -1,0 +1,92 @@
+// Cells cut again only about added seeds (cells/growing_cells.hpp) must be the cells of all the
+// seeds cut afresh, bit for bit: the skew repair relies on it, and so does rebuilding a mesh from
+// its seeds.csv.
+#include <gtest/gtest.h>
+
+#include "cells/growing_cells.hpp"
+#include "cells/mesh_checks.hpp"
+#include "cells/seed_sets.hpp"
+#include "test_support.hpp"
+#include "vorocrust/error.hpp"
+#include "vorocrust/mesher.hpp"
+#include "vorocrust/read_mesh.hpp"
+
+namespace vorocrust {
+namespace {
+
+void expect_same_mesh(const VoronoiMesh& a, const VoronoiMesh& b) {
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t p = 0; p < a.points.size(); ++p) ASSERT_EQ(a.points[p], b.points[p]) << "point " << p;
+  ASSERT_EQ(a.faces.size(), b.faces.size());
+  for (std::size_t f = 0; f < a.faces.size(); ++f) {
+    ASSERT_EQ(a.faces[f].points, b.faces[f].points) << "face " << f;
+    ASSERT_EQ(a.faces[f].owner, b.faces[f].owner) << "face " << f;
+    ASSERT_EQ(a.faces[f].neighbour, b.faces[f].neighbour) << "face " << f;
+  }
+  ASSERT_EQ(a.cells.size(), b.cells.size());
+  for (std::size_t c = 0; c < a.cells.size(); ++c) {
+    ASSERT_EQ(a.cells[c].faces, b.cells[c].faces) << "cell " << c;
+    ASSERT_EQ(a.cells[c].volume, b.cells[c].volume) << "cell " << c;
+  }
+}
+
+// The seeds with every `stride`-th one moved to the end, and how many stay in front.
+std::pair<std::vector<Seed>, std::size_t> held_back(const std::vector<Seed>& seeds, std::size_t stride) {
+  std::vector<Seed> front, back;
+  for (std::size_t s = 0; s < seeds.size(); ++s) (s % stride == stride - 1 ? back : front).push_back(seeds[s]);
+  const std::size_t kept = front.size();
+  front.insert(front.end(), back.begin(), back.end());
+  return {front, kept};
+}
+
+void expect_growing_matches_fresh(const std::vector<Seed>& seeds, std::size_t stride) {
+  const auto [all, kept] = held_back(seeds, stride);
+  cells::GrowingCells growing(std::vector<Seed>(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(kept)), {});
+  // In two steps, as the repair rounds add theirs.
+  const std::size_t middle = kept + (all.size() - kept) / 2;
+  growing.add_seeds(std::vector<Seed>(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(middle)));
+  growing.add_seeds(all);
+  const VoronoiMesh fresh = compute_cells(all);
+  test::expect_valid(fresh, all);
+  expect_same_mesh(growing.mesh(), fresh);
+}
+
+TEST(GrowingCells, AddedSeedsGiveTheCellsOfAllSeedsOnAJitteredLattice) {
+  const auto seeds = test::lattice_seeds(14, 0.3, [](const Point& p) {
+    return (p.array() > 0.5).all() && (p.array() < 12.5).all() ? kInsideRegion : kOutsideRegion;
+  });
+  expect_growing_matches_fresh(seeds, 53);
+}
+
+TEST(GrowingCells, AddedSeedsGiveTheCellsOfAllSeedsOfAWholeRun) {
+  // A run's seeds: surface seeds cospherical about every ball centre, poles, interior and
+  // outside seeds; one in 97 comes later, about 120 in all.
+  MeshOptions options;
+  options.seed = 3;
+  const MeshResult r = generate_mesh(read_mesh(test::model("cgal_joint.off")), options);
+  expect_growing_matches_fresh(r.seeds, 97);
+}
+
+TEST(GrowingCells, AFrameThatChangesCutsEveryCellAgain) {
+  auto seeds = test::lattice_seeds(8, 0.3, [](const Point& p) {
+    return (p.array() > 0.5).all() && (p.array() < 6.5).all() ? kInsideRegion : kOutsideRegion;
+  });
+  cells::GrowingCells growing(seeds, {});
+  Seed far = seeds.front();
+  far.position = Point(-20, 3, 3);  // outside the seeds' box: another frame
+  seeds.push_back(far);
+  growing.add_seeds(seeds);
+  expect_same_mesh(growing.mesh(), compute_cells(seeds));
+}
+
+TEST(GrowingCells, SeedsCanOnlyBeAdded) {
+  auto seeds = test::lattice_seeds(5, 0.2, [](const Point& p) {
+    return (p.array() > 0.5).all() && (p.array() < 3.5).all() ? kInsideRegion : kOutsideRegion;
+  });
+  cells::GrowingCells growing(seeds, {});
+  seeds.pop_back();
+  EXPECT_THROW(growing.add_seeds(seeds), Error);
+}
+
+}  // namespace
+}  // namespace vorocrust
