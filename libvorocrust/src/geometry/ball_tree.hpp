@@ -44,12 +44,17 @@ class BallTree {
     return inside;
   }
   // min over the balls q of r_q + L |p - q|: the largest radius a ball at p may have beside them
-  // under the Lipschitz condition (infinity when the tree is empty).
-  double lipschitz_bound(const Point& p, double L) const {
-    double best = std::numeric_limits<double>::infinity();
+  // under the Lipschitz condition (infinity when the tree is empty). Only balls numbered `first`
+  // or later count, and the bound starts at `below`: a ball that already kept the condition with
+  // the older ones checks only the newer ones.
+  double lipschitz_bound(const Point& p, double L, std::uint32_t first = 0,
+                         double below = std::numeric_limits<double>::infinity()) const {
+    double best = below;
     search(
-        p, [&](double d2, double, std::uint32_t) { return L * L * d2 < best * best; },
-        [&](const Sphere& s) { best = std::min(best, s.radius + L * (s.centre - p).norm()); });
+        p, [&](double d2, double, std::uint32_t newest) { return newest >= first && L * L * d2 < best * best; },
+        [&](const Sphere& s) {
+          if (s.ball >= first) best = std::min(best, s.radius + L * (s.centre - p).norm());
+        });
     return best;
   }
 

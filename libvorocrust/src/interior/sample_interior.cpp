@@ -1,6 +1,9 @@
 // Interior seeds (paper 2.5, appendix A.5).
 #include "interior/sample_interior.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -143,13 +146,23 @@ class InteriorSampler {
   // Shrinks every seed's ball to min over the other seeds q of r_q + L |z - q|. One pass reaches
   // the fixed point: the bound through a chain of seeds is never below the direct one, by the
   // triangle inequality. Returns whether a ball shrank.
+  //
+  // A sampled seed kept the condition with the surface seeds and the older seeds when it was
+  // admitted, and every pass since kept it, so only the seeds that came after it can bound it;
+  // the given seeds (the poles) were never admitted and meet all.
   bool enforce_lipschitz() {
+    const double L = options_.lipschitz;
     std::vector<double> radii(seeds_.size());
-    for (std::uint32_t i = 0; i < seeds_.size(); ++i) {
-      const Point& z = seeds_[i].position;
-      radii[i] = std::min({seeds_[i].radius, surface_tree_.lipschitz_bound(z, options_.lipschitz),
-                           interior_tree_.lipschitz_bound(z, options_.lipschitz)});
-    }
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, static_cast<std::uint32_t>(seeds_.size()), 1024),
+                      [&](const auto& range) {
+                        for (std::uint32_t i = range.begin(); i != range.end(); ++i) {
+                          const Point& z = seeds_[i].position;
+                          const bool given = i < given_;
+                          double r = seeds_[i].radius;
+                          if (given) r = std::min(r, surface_tree_.lipschitz_bound(z, L));
+                          radii[i] = interior_tree_.lipschitz_bound(z, L, given ? 0 : i + 1, r);
+                        }
+                      });
     bool shrank = false;
     for (std::uint32_t i = 0; i < seeds_.size(); ++i) {
       if (radii[i] < seeds_[i].radius) {
