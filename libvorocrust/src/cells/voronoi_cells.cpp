@@ -24,6 +24,7 @@ struct Scratch {
   std::vector<std::uint32_t> near;
   std::vector<double> distance2;
   std::vector<std::uint32_t> order, rank, faces_order;
+  std::vector<std::pair<std::uint32_t, double>> within;
 };
 
 // Voro++ numbers a cell's vertices and faces in the order its cuts met them, and a cut that
@@ -104,6 +105,8 @@ constexpr std::size_t kSlabCells = 8192;
 constexpr double kSeedsPerBlock = 5.6;
 // First margin of neighbouring seeds around a slab, in units of the seed spacing.
 constexpr double kFirstMargin = 3.0;
+// Seeds the first k-d tree query gives a cell cut alone: most cells need fewer.
+constexpr std::size_t kNearestFirst = 32;
 
 // The seeds sorted along the axis that the slabs cut, and the bounds of the container.
 struct Layout {
@@ -280,34 +283,49 @@ Index cut_each(const std::vector<Point>& positions, std::size_t count, SeedOf se
       const Index seed = seed_of(k);
       const Point& p = positions[seed];
       cell.init(-reach, reach, -reach, reach, -reach, reach);
-      std::size_t cut = 0;  // seeds cut so far, nearest first
-      for (std::size_t wanted = 32;; wanted *= 2) {
-        wanted = std::min(wanted, positions.size());
-        scratch.near.resize(wanted);
-        scratch.distance2.resize(wanted);
-        const std::size_t found = tree.knnSearch(p.data(), wanted, scratch.near.data(), scratch.distance2.data());
-        // The cut order must not depend on the tree (a cell cut again after seeds were added must
-        // come out as it would among all of them): by distance, then by seed, and only the seeds
-        // nearer than the farthest found, which are certainly all there are that near.
-        const bool all = found == positions.size();
-        const double farthest = found > 0 ? scratch.distance2[found - 1] : 0;
-        order.clear();
-        for (std::size_t j = 0; j < found; ++j) {
-          if (all || scratch.distance2[j] < farthest) order.emplace_back(scratch.distance2[j], scratch.near[j]);
-        }
-        std::sort(order.begin(), order.end());
-        for (; cut < order.size(); ++cut) {
-          const std::uint32_t other = order[cut].second;
+      // The seeds in the order of (distance, seed), each cut unless it lies beyond twice the
+      // cell's farthest vertex, where it cannot cut, nor can any after it: the nearest from a
+      // k-d tree query, then those in shells of doubling radius. So the cuts that are made do
+      // not depend on the tree, nor on seeds beyond the reach, whatever else the positions hold.
+      double reach2 = 0;  // the farthest seed cut, squared
+      const auto cut_in_order = [&](std::vector<std::pair<double, std::uint32_t>>& candidates) {
+        std::sort(candidates.begin(), candidates.end());
+        for (const auto& [d2, other] : candidates) {
           if (other == seed) continue;
+          if (d2 > cell.max_radius_squared()) return false;
           const Point d = positions[other] - p;
           cell.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(other));
+          reach2 = d2;
         }
-        // A seed at distance d cuts the cell only if d / 2 is below its farthest vertex, whose
-        // doubled distance Voro++'s max_radius_squared gives.
-        if (all || farthest > cell.max_radius_squared()) break;
+        return true;
+      };
+      const std::size_t wanted = std::min<std::size_t>(kNearestFirst, positions.size());
+      scratch.near.resize(wanted);
+      scratch.distance2.resize(wanted);
+      const std::size_t found = tree.knnSearch(p.data(), wanted, scratch.near.data(), scratch.distance2.data());
+      const bool all = found == positions.size();
+      // Every seed nearer than `lower` (squared) has had its turn.
+      double lower = found > 0 ? scratch.distance2[found - 1] : 0;
+      order.clear();
+      for (std::size_t j = 0; j < found; ++j) {  // those at the farthest distance may have twins the query left out
+        if (all || scratch.distance2[j] < lower) order.emplace_back(scratch.distance2[j], scratch.near[j]);
+      }
+      bool more = cut_in_order(order) && !all;
+      while (more && lower <= cell.max_radius_squared()) {
+        const double bound2 = std::nextafter(cell.max_radius_squared(), std::numeric_limits<double>::infinity());
+        const double upper = std::min(bound2, std::max(4 * lower, 1e-300));
+        scratch.within.clear();
+        tree.radiusSearch(p.data(), upper, scratch.within, nanoflann::SearchParams(32, 0, false));
+        order.clear();
+        for (const auto& [other, d2] : scratch.within) {
+          if (d2 >= lower) order.emplace_back(d2, other);
+        }
+        more = cut_in_order(order) && scratch.within.size() < positions.size();
+        lower = upper;
       }
       RawCell& out = cell_of(k);
       extract(cell, p, out, scratch);
+      out.reach2 = std::max(reach2, cell.max_radius_squared());
       for (const std::int32_t n : out.neighbours) {
         if (n < 0) unbounded[k] = seed;
       }
@@ -341,12 +359,8 @@ std::vector<std::size_t> cells_reached(const std::vector<Point>& positions, cons
     std::vector<std::pair<std::uint32_t, double>> near;
     for (std::size_t c = range.begin(); c != range.end(); ++c) {
       const Point& p = positions[cell_seeds[c]];
-      double farthest2 = 0;
-      for (const Point& v : cells[c].vertices) farthest2 = std::max(farthest2, (v - p).squaredNorm());
-      // The cut meets every seed up to twice the farthest vertex away, and even one that leaves
-      // the cell as it is can change how the later cuts round.
       near.clear();
-      reached[c] = tree.radiusSearch(p.data(), 4 * farthest2 * (1 + 1e-9) + 1e-9, near, nanoflann::SearchParams()) > 0;
+      reached[c] = tree.radiusSearch(p.data(), cells[c].reach2 * (1 + 1e-9) + 1e-12, near, nanoflann::SearchParams()) > 0;
     }
   });
   std::vector<std::size_t> out;

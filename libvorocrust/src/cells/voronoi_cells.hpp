@@ -7,8 +7,8 @@
 // round-off or by a tiny edge: welding is the caller's job.
 //
 // Each cell is cut alone from a cube bigger than all seeds by the bisector planes of the other
-// seeds, nearest first (a k-d tree gives them; ties by seed index), until the next seed is farther than twice the
-// cell's farthest vertex. Voro++'s containers were the first choice, but their uniform grid
+// seeds, nearest first (a k-d tree gives them; ties by seed index), until the next seed is
+// farther than twice the cell's farthest vertex. Voro++'s containers were the first choice, but their uniform grid
 // suits VoroCrust's seeds badly: thin layers of surface seeds, sparse interior seeds and outside
 // seeds spread over a box three times the model's crowd some blocks and empty others
 // (igl_bunny: 37 s in containers, 9 s nearest first; as fast on even seeds), and where many
@@ -34,6 +34,10 @@ struct RawCell {
   std::vector<std::int32_t> neighbours;  // per face: the seed across it, or a Voro++ wall (< 0)
   std::vector<std::uint32_t> starts;     // per face: where its cycle starts in `cycles`; plus the end
   std::vector<std::uint32_t> cycles;     // vertex indices, counter-clockwise seen from outside
+  // Squared, the distance within which another seed could have changed how the cell was cut
+  // (the farthest seed cut, or twice the farthest vertex); set by the cuts alone, not by Voro++'s
+  // containers.
+  double reach2 = 0;
   std::size_t num_faces() const { return neighbours.size(); }
 };
 
@@ -53,10 +57,9 @@ std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point
 void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
                              const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells);
 
-// The cells (indices into `cells`, the cells of `cell_seeds`) within whose reach the seeds
-// `added` lie: nearer to the cell's seed than twice its farthest vertex, where
-// compute_voronoi_cells would have cut them. The other cells it would cut among all positions
-// exactly as they are, since their cut order does not depend on the seeds' k-d tree.
+// The cells (indices into `cells`, the cells of `cell_seeds`, cut by compute_voronoi_cells)
+// within whose reach2 the seeds `added` lie. The other cells compute_voronoi_cells would cut
+// among all the positions exactly as they are.
 std::vector<std::size_t> cells_reached(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
                                        const std::vector<RawCell>& cells, const std::vector<Index>& added);
 
