@@ -118,6 +118,38 @@ Point circumcentre(const Index* generators, std::size_t count, const std::vector
   return p.allFinite() && (p - fallback).norm() <= limit ? p : fallback;
 }
 
+// Raw vertices a little more than the tolerance apart about nearly cospherical seeds (a corner
+// ball's centre) are distinct points, yet their circumcentres fit the same seeds and can land
+// within round-off of each other, which would leave faces of no area (checkMesh: "incorrectly
+// oriented"). Placed points within tolerance of each other become one as well, the lowest.
+void merge_coincident_points(WeldedVertices& w, const std::vector<std::uint32_t>& root, const std::vector<double>& tol,
+                             const Frame& frame) {
+  const std::size_t n = w.points.size();
+  std::vector<Point> placed(n);
+  std::vector<double> point_tol(n, 0);
+  for (std::size_t i = 0; i < root.size(); ++i) {
+    if (root[i] != i) continue;
+    const Index p = w.point_of[i];
+    placed[p] = (w.points[p] - frame.centre) / frame.scale;
+    point_tol[p] = tol[i];
+  }
+  UnionFind sets(n);
+  unite_close_points(placed, point_tol, sets);
+  std::vector<Index> label(n, 0);
+  Index kept = 0;
+  for (std::uint32_t p = 0; p < n; ++p) {
+    const std::uint32_t r = sets.find(p);
+    label[p] = r == p ? kept++ : label[r];
+  }
+  if (kept == n) return;
+  std::vector<Point> points(kept);
+  for (std::uint32_t p = 0; p < n; ++p) {
+    if (sets.find(p) == p) points[label[p]] = w.points[p];
+  }
+  w.points = std::move(points);
+  for (Index& p : w.point_of) p = label[p];
+}
+
 }  // namespace
 
 WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
@@ -178,6 +210,7 @@ WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vecto
                                         10 * tol[i] * frame.scale);
     }
   });
+  merge_coincident_points(w, root, tol, frame);
   return w;
 }
 

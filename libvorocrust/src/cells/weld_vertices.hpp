@@ -14,7 +14,7 @@
 // seed and the seeds across the faces at it), computed from the original seed coordinates, so
 // that it is equidistant from them up to round-off; when those seeds are too nearly coplanar for
 // that (the circumcentre strays by more than ten tolerances from the instance) it stays at the
-// instance.
+// instance. Points so placed within tolerance of each other are one point too.
 #pragma once
 
 #include <cstdint>

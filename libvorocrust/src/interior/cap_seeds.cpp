@@ -43,6 +43,7 @@ class SphereSeeds {
   SphereSeeds(const BallIndex& balls, const RegionLocator& regions) : balls_(balls), regions_(regions) {}
 
   void remember(const Seed& s) { placed_.insert(s.position, kSpacing * s.radius, count_++); }
+  bool near_placed(const Point& p) const { return placed_.contains(p); }
 
   // The seed of material `region` at direction u (unit) on ball b's sphere, if it may go there.
   std::optional<Seed> place(std::uint32_t b, const Point& u, std::int32_t region) {
@@ -56,7 +57,7 @@ class SphereSeeds {
         if (q != b) return std::nullopt;  // inside another ball: it would cut into the surface
       }
     }
-    if (placed_.contains(p)) return std::nullopt;
+    if (near_placed(p)) return std::nullopt;
     if (regions_.region_of(p, u) != region) return std::nullopt;
     Seed s{p, region, r, SeedKind::Cap};
     remember(s);
@@ -131,13 +132,26 @@ std::vector<Seed> skew_repair_seeds(const VoronoiMesh& cells, const std::vector<
       }
     }
     std::sort(candidates.begin(), candidates.end());
+    bool repaired = false;
     for (const auto& [order, q] : candidates) {
       const Point towards = g.centroid - balls[q].site.position;
       if (!(towards.norm() > 0)) continue;
       if (const std::optional<Seed> seed = place.place(q, towards.normalized(), region)) {
         added.push_back(*seed);
+        repaired = true;
         break;
       }
+    }
+    if (repaired) continue;
+    // No sphere takes one (a face between two seeds on no common sphere, often one a repair
+    // seed): a seed at the face's centroid, where no ball reaches, takes the small face's corner
+    // of both cells. No seed is nearer there than the two the face is equidistant from.
+    const double clearance = (g.centroid - s.position).norm();
+    if (!balls.covers(g.centroid) && clearance > 0 &&
+        regions.region_of(g.centroid, g.normal) == region && !place.near_placed(g.centroid)) {
+      Seed seed{g.centroid, region, clearance, SeedKind::Interior};
+      place.remember(seed);
+      added.push_back(seed);
     }
   }
   return added;
