@@ -7,6 +7,7 @@
 #include <numeric>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "cells/cell_faces.hpp"
 #include "cells/growing_cells.hpp"
@@ -219,9 +220,14 @@ void GrowingCells::add_cell(std::size_t s) {
   cell_seeds_.push_back(static_cast<Index>(s));
 }
 
-void GrowingCells::cut_all() {
+template <class Work>
+void GrowingCells::in_arena(Work&& work) const {
   tbb::task_arena arena(options_.threads > 0 ? options_.threads : tbb::task_arena::automatic);
-  arena.execute([&] {
+  arena.execute(std::forward<Work>(work));
+}
+
+void GrowingCells::cut_all() {
+  in_arena([&] {
     frame_ = make_frame(seeds_);
     raw_ = compute_voronoi_cells(frame_.normalized, cell_seeds_);
   });
@@ -242,8 +248,7 @@ void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
     return;
   }
   frame_ = std::move(frame);
-  tbb::task_arena arena(options_.threads > 0 ? options_.threads : tbb::task_arena::automatic);
-  arena.execute([&] {
+  in_arena([&] {
     std::vector<Index> added(seeds_.size() - old_count);
     std::iota(added.begin(), added.end(), static_cast<Index>(old_count));
     std::vector<std::size_t> which = cells_reached(frame_.normalized, cell_seeds_, raw_, added);
@@ -255,8 +260,7 @@ void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
 
 VoronoiMesh GrowingCells::mesh() const {
   VoronoiMesh mesh;
-  tbb::task_arena arena(options_.threads > 0 ? options_.threads : tbb::task_arena::automatic);
-  arena.execute([&] {
+  in_arena([&] {
     const Frame& frame = frame_;
     const std::vector<Index>& cell_seeds = cell_seeds_;
     const std::vector<std::int32_t>& cell_of_seed = cell_of_seed_;

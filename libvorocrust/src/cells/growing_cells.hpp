@@ -3,9 +3,9 @@
 //
 // GrowingCells(seeds, options) cuts the cell of every material seed (options.materials) and
 // checks the seeds as compute_cells does. add_seeds(seeds), given the seeds it has followed by
-// new ones, cuts the new seeds' cells and, of the others, only those across a new seed's faces:
-// a new seed changes exactly the cells it cuts. mesh() welds and assembles the cells as they
-// stand. The skew repair adds a few dozen seeds to tens of thousands, so it pays for the new
+// new ones, cuts the new seeds' cells and, of the others, only those whose reach (RawCell::reach2:
+// the farthest seed their cut met) a new seed enters: no other cut would change, even by
+// round-off. mesh() welds and assembles the cells as they stand. The skew repair adds a few dozen seeds to tens of thousands, so it pays for the new
 // seeds' neighbourhoods, not for all the cells again.
 //
 // mesh() is compute_cells(seeds, options) for the seeds as they stand, bit for bit: cells are
@@ -31,6 +31,8 @@ class GrowingCells {
  private:
   void add_cell(std::size_t seed);
   void cut_all();
+  template <class Work>
+  void in_arena(Work&& work) const;  // on options_.threads threads
 
   std::vector<Seed> seeds_;
   CellsOptions options_;

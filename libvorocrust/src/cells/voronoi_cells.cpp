@@ -260,13 +260,9 @@ std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, 
   return cells;
 }
 
-namespace {
-
-// Cuts cells[k] for k < count, the cell of seed_of(k), and returns the lowest seed whose cell kept a
-// wall of the initial cube (max() when none did).
-template <class SeedOf, class CellOf>
-Index cut_each(const std::vector<Point>& positions, std::size_t count, SeedOf seed_of, CellOf cell_of, int variant) {
-  if (count == 0) return std::numeric_limits<Index>::max();
+void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells) {
+  if (which.empty()) return;
   const Cloud cloud{&positions};
   StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   Eigen::AlignedBox3d bounds;
@@ -274,13 +270,13 @@ Index cut_each(const std::vector<Point>& positions, std::size_t count, SeedOf se
   // The initial cell: a cube about each seed bigger than all seeds, so that only a cell no seed
   // bounds keeps one of its walls.
   const double reach = (bounds.diagonal().norm() + 1) * std::pow(1.375, variant);
-  std::vector<Index> unbounded(count, std::numeric_limits<Index>::max());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 256), [&](const auto& range) {
+  std::vector<Index> unbounded(which.size(), std::numeric_limits<Index>::max());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 256), [&](const auto& range) {
     voro::voronoicell_neighbor cell;
     Scratch scratch;
     std::vector<std::pair<double, std::uint32_t>> order;
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
-      const Index seed = seed_of(k);
+      const Index seed = cell_seeds[which[k]];
       const Point& p = positions[seed];
       cell.init(-reach, reach, -reach, reach, -reach, reach);
       // The seeds in the order of (distance, seed), each cut unless it lies beyond twice the
@@ -323,7 +319,7 @@ Index cut_each(const std::vector<Point>& positions, std::size_t count, SeedOf se
         more = cut_in_order(order) && scratch.within.size() < positions.size();
         lower = upper;
       }
-      RawCell& out = cell_of(k);
+      RawCell& out = cells[which[k]];
       extract(cell, p, out, scratch);
       out.reach2 = std::max(reach2, cell.max_radius_squared());
       for (const std::int32_t n : out.neighbours) {
@@ -331,16 +327,7 @@ Index cut_each(const std::vector<Point>& positions, std::size_t count, SeedOf se
       }
     }
   });
-  return *std::min_element(unbounded.begin(), unbounded.end());
-}
-
-}  // namespace
-
-void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
-                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells) {
-  const Index worst = cut_each(
-      positions, which.size(), [&](std::size_t k) { return cell_seeds[which[k]]; },
-      [&](std::size_t k) -> RawCell& { return cells[which[k]]; }, variant);
+  const Index worst = *std::min_element(unbounded.begin(), unbounded.end());
   if (worst != std::numeric_limits<Index>::max()) {
     throw Error(Error::Kind::InvalidGeometry,
                 "cell of seed " + std::to_string(worst) + " is not bounded by seeds: the seeds do not enclose the "

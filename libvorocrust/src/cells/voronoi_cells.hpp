@@ -8,12 +8,12 @@
 //
 // Each cell is cut alone from a cube bigger than all seeds by the bisector planes of the other
 // seeds, nearest first (a k-d tree gives them; ties by seed index), until the next seed is
-// farther than twice the cell's farthest vertex. Voro++'s containers were the first choice, but their uniform grid
-// suits VoroCrust's seeds badly: thin layers of surface seeds, sparse interior seeds and outside
-// seeds spread over a box three times the model's crowd some blocks and empty others
-// (igl_bunny: 37 s in containers, 9 s nearest first; as fast on even seeds), and where many
-// seeds are nearly cospherical their block order could leave a cell missing a neighbour. Cells
-// are independent, so the result does not depend on the thread count.
+// farther than twice the cell's farthest vertex. Voro++'s containers were the first choice, but
+// their uniform grid suits VoroCrust's seeds badly: thin layers of surface seeds, sparse
+// interior seeds and outside seeds spread over a box three times the model's crowd some blocks
+// and empty others (igl_bunny: 37 s in containers, 9 s nearest first; as fast on even seeds),
+// and where many seeds are nearly cospherical their block order could leave a cell missing a
+// neighbour. Cells are independent, so the result does not depend on the thread count.
 //
 // `positions` should be scaled so that seeds are about one unit apart: Voro++ decides
 // degeneracies with an absolute tolerance of 1e-11.

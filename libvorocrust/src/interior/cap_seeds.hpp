@@ -15,7 +15,8 @@
 // - pole_seeds: one pole per ball and material on its sphere, in the mean direction of that
 //   material's seeds there;
 // - skew_repair_seeds: where a face of the cells is still highly skew, between two cells of one
-//   material whose seeds lie on one ball's sphere, a seed on that sphere toward the face.
+//   material, a seed toward the face on a sphere either seed lies on; where no sphere takes one,
+//   a seed at the face's centroid when no ball holds that point.
 // A seed is kept only where it lies in the material it is placed for (a ray to the surface says
 // so), inside no other ball, and clear of the seeds already placed this way.
 #pragma once

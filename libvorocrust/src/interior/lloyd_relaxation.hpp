@@ -7,9 +7,9 @@
 // ratio rose from 3.26 to 3.36 in 20 free iterations). A move may not take a seed into a protecting ball or
 // a surface seed's ball, where it would cut into the surface facets: such a move is halved, up to
 // three times, and otherwise not made; so is one within the sampler's clearance of a ball
-// (kBallClearance). Cap seeds stay where they are, as surface seeds do. The centroid lies inside the seed's own convex cell, hence
-// in its own region. Returns the largest move of the last iteration relative to the mover's
-// radius (0 when no seed moved).
+// (kBallClearance). Cap seeds stay where they are, as surface seeds do. The centroid lies inside
+// the seed's own convex cell, hence in its own region. Returns the largest move of the last
+// iteration relative to the mover's radius (0 when no seed moved).
 #pragma once
 
 #include <vector>
