@@ -6,6 +6,7 @@
 #include <random>
 
 #include "geometry/box_tree.hpp"
+#include "geometry/closest_point.hpp"
 #include "refinement/point_cloud.hpp"
 #include "refinement/subface.hpp"
 
@@ -44,6 +45,7 @@ struct BoundarySamples::Trees {
   std::vector<SampleGroup> groups;
   std::unique_ptr<geometry::BoxTree> group_tree;  // over the groups' boxes
   std::vector<SurfaceSite> face_sites;            // per face, the site of a point of its plane
+  std::vector<std::array<Point, 3>> face_corners;  // per face
 };
 
 namespace {
@@ -148,6 +150,7 @@ void BoundarySamples::add_patch_samples(const SurfaceMesh& mesh, const Strata& s
     }
     group_face(patch_points_, f, begin, static_cast<std::uint32_t>(patch_points_.size()), trees_->groups, boxes);
     trees_->face_sites.push_back(patch_site(strata, f, a));
+    trees_->face_corners.push_back({a, b, c});
   }
   std::vector<std::uint32_t> items(trees_->groups.size());
   for (std::uint32_t i = 0; i < items.size(); ++i) items[i] = i;
@@ -175,8 +178,10 @@ double BoundarySamples::distance_to_non_cosmooth(const SurfaceSite& center, cons
 
 // The filtered search over the patch samples, one face at a time: a group is skipped when every
 // sample in it lies beyond the face's non-co-smooth reach (most faces near a centre lie in its own
-// patch and bend too little to hold a point that is not co-smooth with it). Only an optimisation:
-// the samples scanned meet the same test, so the result equals a search over all samples.
+// patch and bend too little to hold a point that is not co-smooth with it). A face none of whose
+// points is co-smooth with the centre (a patch that does not meet its stratum) needs no samples:
+// its nearest point is exact, where samples would miss a face folding back within a thin wedge
+// at a corner until the balls the estimate let grow too large had to shrink.
 void BoundarySamples::nearest_non_cosmooth_patch_sample(const SurfaceSite& center, const CoSmoothness& cosmooth,
                                                         double& best) const {
   if (!trees_->group_tree || !(best > 0)) return;
@@ -192,6 +197,11 @@ void BoundarySamples::nearest_non_cosmooth_patch_sample(const SurfaceSite& cente
     const double reach = cosmooth.non_cosmooth_reach(center, group.face, x.position);
     const double gap2 = (p - p.cwiseMax(box.lo).cwiseMin(box.hi)).squaredNorm();
     if (!(gap2 < best) || !(gap2 < reach * reach)) return;
+    if (reach == std::numeric_limits<double>::infinity()) {
+      const auto& t = trees_->face_corners[group.face];
+      best = std::min(best, (geometry::closest_on_triangle(p, t[0], t[1], t[2]) - p).squaredNorm());
+      return;
+    }
     for (std::uint32_t i = group.begin; i < group.end; ++i) {
       x.position = patch_points_[i];
       const double d2 = (x.position - p).squaredNorm();

@@ -158,7 +158,9 @@ class BallRefinement::Impl {
   Pool initial_pool(StratumType type);
   void throw_darts(StratumType type, const std::vector<Subface>& pool, std::string_view phase);
   Pool subdivide(StratumType type, const Pool& pool, bool last_level, const LostRegions& lost);
-  void check_pool_size(const std::vector<Subface>& pool, int depth) const;
+  // sizes[d]: the pool after d subdivisions of this pass.
+  void check_pool_size(const std::vector<Subface>& pool, const std::vector<std::size_t>& sizes) const;
+  void defer_lost_lower_cover(Pool& pool);
 
   // --- shrinking ------------------------------------------------------------------------------
   enum class Reason { C1, C3, Sliver };  // C1 also stands for C2
@@ -188,6 +190,9 @@ class BallRefinement::Impl {
   // Boxes of the balls that shrank, as they were before, for the crease and the patch phase
   // apart: each phase consumes its own, so a crease pass cannot take the patches' regions.
   std::vector<geometry::Box> lost_edges_, lost_faces_;
+  // The type being sampled, and where balls of a lower type shrank during its pass.
+  int sampling_type_ = 3;
+  std::vector<geometry::Box> lost_lower_;
   std::vector<bool> corner_placed_;
   std::vector<std::uint32_t> unsettled_[3];  // per stratum type: balls that may break C3 (enforce_lipschitz)
   int lowest_shrunk_ = 3;
@@ -248,6 +253,11 @@ void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, Reason why)
   if (why != Reason::C3) unsettled_[static_cast<int>(b.site.type)].push_back(ball);
   lowest_shrunk_ = std::min(lowest_shrunk_, static_cast<int>(b.site.type));
   restart_phase_ = std::min(restart_phase_, static_cast<int>(b.site.type));
+  if (static_cast<int>(b.site.type) < sampling_type_) {
+    geometry::Box& box = lost_lower_.emplace_back();
+    box.include(Point(b.site.position.array() - old_radius));
+    box.include(Point(b.site.position.array() + old_radius));
+  }
   mark_dirty(b.site.position, old_radius, b.site.type);
 }
 
@@ -513,10 +523,17 @@ Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool la
   return next;
 }
 
-// Legitimate runs keep well under 10 pieces per input face; a pool this large only grows along a
-// curve no stratum protects, where balls cannot converge (crossing surfaces).
-void BallRefinement::Impl::check_pool_size(const std::vector<Subface>& pool, int depth) const {
-  if (pool.size() <= std::max<std::size_t>(250'000, 60 * mesh_.num_faces())) return;
+// Legitimate runs keep well under 10 pieces per input face, but an input dense with small
+// features (a coarse scan with a corner at most vertices, surfaces crossing at a shallow angle
+// once resolved) holds a few million at its deepest, early on, and shrinks from there. A pool
+// that still doubles level after level once its pieces are a 4096th of their element grows along
+// a curve no stratum protects, where balls cannot converge (surfaces that cross and were kept
+// so, or nearly touch); so does one past the bound that keeps its memory near a gigabyte.
+void BallRefinement::Impl::check_pool_size(const std::vector<Subface>& pool, const std::vector<std::size_t>& sizes) const {
+  const std::size_t depth = sizes.size() - 1;
+  bool runaway = pool.size() > 250'000 && depth >= 12;
+  for (std::size_t d = depth; runaway && d + 4 > depth; --d) runaway = sizes[d] >= 1.8 * static_cast<double>(sizes[d - 1]);
+  if (!runaway && pool.size() <= std::max<std::size_t>(8'000'000, 60 * mesh_.num_faces())) return;
   const Subface& where = pool.front();
   const Index face = where.is_segment() ? strata_.topology.faces_of(where.element)[0] : where.element;
   throw Error(Error::Kind::InvalidGeometry,
@@ -524,6 +541,38 @@ void BallRefinement::Impl::check_pool_size(const std::vector<Subface>& pool, int
                   "uncovered after " + std::to_string(depth) + " subdivisions, first near " +
                   describe_face(mesh_, face) + "; surfaces that intersect or nearly touch are the usual cause",
               {.face = face});
+}
+
+// Where a ball of a lower type shrank, the pieces of this pass may have lost the cover that kept
+// them near a crease or corner, which no ball of this type can give: they would split without end.
+// They leave the pass instead, their elements marked, and the pass after the lower phase has
+// restored its cover takes them up (the phase loop recurses there, paper 2.3).
+void BallRefinement::Impl::defer_lost_lower_cover(Pool& pool) {
+  if (lost_lower_.empty()) return;
+  const geometry::BoxTree lost(lost_lower_, [&] {
+    std::vector<std::uint32_t> items(lost_lower_.size());
+    for (std::uint32_t i = 0; i < items.size(); ++i) items[i] = i;
+    return items;
+  }());
+  lost_lower_.clear();
+  Pool kept;
+  kept.known = pool.known;
+  for (std::size_t i = 0; i < pool.pieces.size(); ++i) {
+    const Subface& piece = pool.pieces[i];
+    geometry::Box box;
+    for (int k = 0; k < piece.corner_count(); ++k) box.include(piece.corner(k));
+    bool meets = false;
+    lost.for_each_overlap(box, [&](std::uint32_t) { meets = true; });
+    if (meets) {
+      auto& flags = piece.is_segment() ? dirty_edge_ : dirty_face_;
+      flags[piece.element] = std::max(flags[piece.element], kLostCover);
+      continue;
+    }
+    kept.pieces.push_back(piece);
+    kept.reaching.insert(kept.reaching.end(), pool.reaching.begin() + pool.first[i], pool.reaching.begin() + pool.first[i + 1]);
+    kept.first.push_back(static_cast<std::uint32_t>(kept.reaching.size()));
+  }
+  pool = std::move(kept);
 }
 
 void BallRefinement::Impl::sample(StratumType type) {
@@ -540,6 +589,9 @@ void BallRefinement::Impl::sample(StratumType type) {
   // pool. (The remaining area vanishes long before the work does, so it would be a poor guide.)
   std::vector<char> pending(type == StratumType::Crease ? strata_.topology.num_edges() : mesh_.num_faces(), 0);
   const std::size_t initial_elements = pool.pieces.size();
+  sampling_type_ = static_cast<int>(type);
+  lost_lower_.clear();
+  std::vector<std::size_t> sizes{pool.pieces.size()};
   for (int depth = 0; !pool.pieces.empty(); ++depth) {
     std::size_t elements = 0;
     for (const Subface& piece : pool.pieces) elements += !pending[piece.element] && (pending[piece.element] = 1);
@@ -548,8 +600,11 @@ void BallRefinement::Impl::sample(StratumType type) {
     throw_darts(type, pool.pieces, phase);
     ++stats_.subdivisions;
     pool = subdivide(type, pool, depth + 1 >= kMaxDepth, lost);
-    check_pool_size(pool.pieces, depth + 1);
+    defer_lost_lower_cover(pool);
+    sizes.push_back(pool.pieces.size());
+    check_pool_size(pool.pieces, sizes);
   }
+  sampling_type_ = 3;
 }
 
 // C3 within one stratum type. New patch and crease balls keep it (initial_radius and
