@@ -21,7 +21,7 @@ struct MeshArgs {
   std::string output_dir;
   MeshOptions options;
   bool quiet = false;
-  bool allow_self_intersections = false;
+  std::string self_intersections = "resolve";
   std::string stop_after;  // "" (everything), "balls" or "surface"
   std::string interior = "random";
   std::vector<double> box;  // empty, or xmin ymin zmin xmax ymax zmax

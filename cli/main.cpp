@@ -86,8 +86,12 @@ int main(int argc, char** argv) {
   mesh_cmd->add_option("--stop-after", mesh.stop_after, "Stop after a stage and write its output: 'balls' (balls.csv, balls.vtk) or 'surface' "
                        "(also seeds.csv, surface.obj, surface.ply)")
       ->check(CLI::IsMember({"balls", "surface"}));
-  mesh_cmd->add_flag("--allow-self-intersections", mesh.allow_self_intersections,
-                     "Mesh even when input faces intersect each other");
+  mesh_cmd->add_option("--self-intersections", mesh.self_intersections,
+                       "Faces that cut through each other: 'resolve' cuts them along their intersection curves, which "
+                       "become creases, and joins each new piece of space to a region of the input; 'refuse' stops "
+                       "with exit code 4 naming them; 'keep' meshes them as they are")
+      ->check(CLI::IsMember({"resolve", "refuse", "keep"}))
+      ->capture_default_str();
   mesh_cmd->add_flag("-q,--quiet", mesh.quiet, "Print nothing but errors");
 
   CheckBallsArgs check;

@@ -32,6 +32,9 @@ int run_mesh(const MeshArgs& args) {
   options.interior = args.interior == "lattice" ? InteriorMode::Lattice
                      : args.interior == "cvt"   ? InteriorMode::Cvt
                                                 : InteriorMode::Random;
+  options.self_intersections = args.self_intersections == "refuse" ? SelfIntersections::Refuse
+                               : args.self_intersections == "keep" ? SelfIntersections::Keep
+                                                                   : SelfIntersections::Resolve;
   if (args.box.size() == 6) options.box = {args.box[0], args.box[1], args.box[2], args.box[3], args.box[4], args.box[5]};
   report.options = options;
   const std::filesystem::path report_path = std::filesystem::path(args.output_dir) / "report.json";
@@ -53,15 +56,15 @@ int run_mesh(const MeshArgs& args) {
     progress.begin("reading");
     mesh = read_meshes({args.inputs.begin(), args.inputs.end()});
     progress.begin("validating");
-    validation = validate(*mesh);
+    validation = validate(*mesh, {.self_intersections_are_errors = options.self_intersections == SelfIntersections::Refuse});
     info = mesh_info(*mesh);
     report.mesh = &*mesh;
     report.input = &*info;
     report.validation = &*validation;
     for (const Finding& f : validation->findings) {
-      const bool overridden = f.code == "self-intersection" && args.allow_self_intersections;
-      if (f.severity == Finding::Severity::Error && !overridden) {
-        const std::string hint = f.code == "self-intersection" ? " (--allow-self-intersections to mesh anyway)" : "";
+      if (f.severity == Finding::Severity::Error) {
+        const std::string hint =
+            f.code == "self-intersection" ? " (--self-intersections resolve cuts them along their intersection curves)" : "";
         throw Error(Error::Kind::InvalidGeometry, f.message + hint);
       }
       if (!args.quiet && f.severity != Finding::Severity::Note) {
@@ -103,6 +106,12 @@ int run_mesh(const MeshArgs& args) {
     });
     progress.finish();
     if (!args.quiet) {
+      const SelfIntersectionStats& s = result->self_intersections;
+      if (s.faces_cut > 0) {
+        std::fprintf(stderr, "vorocrust: self-intersections resolved: %zu faces cut along their intersection curves "
+                     "(%zu new points), %zu faces left inside one region dropped, %zu faces in all\n",
+                     s.faces_cut, s.points_added, s.faces_dropped, s.faces);
+      }
       const RefinementStats& r = result->refinement;
       std::fprintf(stderr, "vorocrust: %zu balls (%zu corner, %zu crease, %zu patch) in %s\n",
                    r.balls[0] + r.balls[1] + r.balls[2], r.balls[0], r.balls[1], r.balls[2], args.output_dir.c_str());

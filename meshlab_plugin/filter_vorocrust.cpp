@@ -26,6 +26,7 @@ const char* const kLipschitz = "lipschitz";
 const char* const kSharpAngle = "sharpAngle";
 const char* const kMaxSize = "maxSize";
 const char* const kSeed = "seed";
+const char* const kResolveSelfIntersections = "resolveSelfIntersections";
 const char* const kInterior = "interior";
 const char* const kCvtIterations = "cvtIterations";
 const char* const kOutputFolder = "outputFolder";
@@ -80,6 +81,10 @@ void add_refinement_parameters(const MeshModel* m, RichParameterList& parameters
   parameters.addParam(RichInt(kSeed, 0, "Random seed",
                               "Equal input, parameters and seed give equal output, as with the vorocrust "
                               "program's --seed."));
+  parameters.addParam(RichBool(kResolveSelfIntersections, true, "Resolve self-intersections",
+                               "Faces that cut through each other are cut along their intersection curves, which "
+                               "become creases, and each new piece of space joins a region of the input; "
+                               "unchecked, such faces stop the filter with their names."));
 }
 
 // The library's options from the filter's parameters; throws Error(Usage) for a value out of range.
@@ -93,6 +98,8 @@ vorocrust::MeshOptions mesh_options(const RichParameterList& parameters, vorocru
   const int seed = parameters.getInt(kSeed);
   if (seed < 0) throw Error(Error::Kind::Usage, "the random seed must be 0 or positive");
   options.seed = static_cast<std::uint64_t>(seed);
+  options.self_intersections = parameters.getBool(kResolveSelfIntersections) ? vorocrust::SelfIntersections::Resolve
+                                                                             : vorocrust::SelfIntersections::Refuse;
   options.stop_after = stage;
   options.check();
   return options;
@@ -164,10 +171,12 @@ QString default_output_folder(const MeshModel* m) {
 
 // Validates the surface as the vorocrust program does before meshing: orientation problems are
 // fixed in the copy (the layers stay as they are), warnings are logged, and error findings
-// (zero-area or duplicate faces, self-intersections) stop the filter with their messages.
+// (zero-area or duplicate faces, self-intersections unless they are resolved) stop the filter
+// with their messages.
 template <class Logger>
-void check_input(vorocrust::SurfaceMesh& surface, Logger&& log) {
-  const vorocrust::ValidationReport report = vorocrust::validate(surface);
+void check_input(vorocrust::SurfaceMesh& surface, const vorocrust::MeshOptions& options, Logger&& log) {
+  const vorocrust::ValidationReport report = vorocrust::validate(
+      surface, {.self_intersections_are_errors = options.self_intersections == vorocrust::SelfIntersections::Refuse});
   std::string errors;
   for (const vorocrust::Finding& f : report.findings) {
     if (f.severity == vorocrust::Finding::Severity::Error) {
@@ -198,7 +207,11 @@ std::string describe_surface(const vorocrust::MeshResult& result) {
 
 std::string describe(const vorocrust::MeshResult& result) {
   const vorocrust::RefinementStats& r = result.refinement;
-  return std::to_string(result.balls.size()) + " balls (" + std::to_string(r.balls[0]) + " corner, " +
+  const vorocrust::SelfIntersectionStats& s = result.self_intersections;
+  const std::string resolved =
+      s.faces_cut == 0 ? "" : "self-intersections resolved (" + std::to_string(s.faces_cut) + " faces cut, " +
+                                  std::to_string(s.faces_dropped) + " inside one region dropped); ";
+  return resolved + std::to_string(result.balls.size()) + " balls (" + std::to_string(r.balls[0]) + " corner, " +
          std::to_string(r.balls[1]) + " crease, " + std::to_string(r.balls[2]) + " patch); " +
          std::to_string(result.features.corners) + " corners, " + std::to_string(result.features.creases) +
          " creases, " + std::to_string(result.features.patches) + " patches";
@@ -232,7 +245,8 @@ QString FilterVoroCrustPlugin::filterInfo(FilterIDType filter) const {
              "layer with one vertex per ball centre: the radius is the per-vertex attribute <i>radius</i> and "
              "the vertex quality, the stratum is in <i>stratum_type</i> (0 corner, 1 crease, 2 patch) and "
              "<i>stratum_index</i>, and the colour shows the stratum type. The mesh is validated first: "
-             "zero-area or duplicate faces and self-intersections stop the filter." +
+             "zero-area or duplicate faces stop the filter, and so do faces cutting through each other "
+             "unless they are resolved (cut along their intersection curves)." +
              paper;
     case FP_VORONOI_MESH:
       return "Meshes the volume the current mesh bounds (or the volumes of all visible layers, each a "
@@ -328,7 +342,7 @@ void FilterVoroCrustPlugin::protecting_balls(MeshDocument& md, const RichParamet
   const vorocrust::MeshOptions options = mesh_options(parameters, vorocrust::Stage::Balls);
   MeshModel& source = *md.mm();
   vorocrust::SurfaceMesh surface = vorocrust::meshlab::surface_from_layers({&source});
-  check_input(surface, [this](const std::string& line) { Log("VoroCrust: %s", line.c_str()); });
+  check_input(surface, options, [this](const std::string& line) { Log("VoroCrust: %s", line.c_str()); });
   const vorocrust::MeshResult result =
       vorocrust::generate_mesh(surface, options, vorocrust::meshlab::progress_to(cb));
   MeshModel* layer = vorocrust::meshlab::add_balls_layer(md, result.balls, source);
@@ -360,7 +374,7 @@ void FilterVoroCrustPlugin::voronoi_mesh(MeshDocument& md, const RichParameterLi
   }
 
   vorocrust::SurfaceMesh surface = vorocrust::meshlab::surface_from_layers(layers);
-  check_input(surface, [this](const std::string& line) { Log("VoroCrust: %s", line.c_str()); });
+  check_input(surface, options, [this](const std::string& line) { Log("VoroCrust: %s", line.c_str()); });
   make_output_folder(request.output);
   const vorocrust::MeshResult result =
       vorocrust::generate_mesh(surface, options, vorocrust::meshlab::progress_to(cb));

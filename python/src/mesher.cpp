@@ -22,6 +22,14 @@ InteriorMode interior_named(const std::string& name) {
   throw Error(Error::Kind::Usage, "interior must be 'random', 'lattice' or 'cvt', got '" + name + "'");
 }
 
+SelfIntersections self_intersections_named(const std::string& name) {
+  for (SelfIntersections mode : {SelfIntersections::Resolve, SelfIntersections::Refuse, SelfIntersections::Keep}) {
+    if (name == to_string(mode)) return mode;
+  }
+  throw Error(Error::Kind::Usage,
+              "self_intersections must be 'resolve', 'refuse' or 'keep', got '" + name + "'");
+}
+
 const char* stage_name(Stage stage) {
   return stage == Stage::Balls ? "balls" : stage == Stage::Surface ? "surface" : "cells";
 }
@@ -58,8 +66,7 @@ struct MeshRun {
   }
 };
 
-MeshRun run_mesh(const py::object& model, MeshOptions options, bool allow_self_intersections,
-                 const py::object& progress) {
+MeshRun run_mesh(const py::object& model, MeshOptions options, const py::object& progress) {
   options.check();
   const Surface surface = read_surface_input(model);
   auto run = std::make_shared<Run>();
@@ -77,12 +84,14 @@ MeshRun run_mesh(const py::object& model, MeshOptions options, bool allow_self_i
   try {
     py::gil_scoped_release release;
     const ThreadLimit threads(options.threads);
-    run->validation = validate(run->input);
+    run->validation =
+        validate(run->input, {.self_intersections_are_errors = options.self_intersections == SelfIntersections::Refuse});
     for (const Finding& f : run->validation.findings) {
       if (f.severity != Finding::Severity::Error) continue;
-      if (f.code == "self-intersection" && allow_self_intersections) continue;
       throw Error(Error::Kind::InvalidGeometry,
-                  f.message + (f.code == "self-intersection" ? " (allow_self_intersections=True to mesh anyway)" : ""));
+                  f.message + (f.code == "self-intersection"
+                                   ? " (self_intersections=\"resolve\" cuts them along their intersection curves)"
+                                   : ""));
     }
     run->info = mesh_info(run->input);
     run->result = generate_mesh(run->input, options, bridge.callback());
@@ -218,13 +227,14 @@ the same document as the CLI's OUTDIR/report.json.
     d["stop_after"] = stage_name(defaults.stop_after);
     d["seed"] = defaults.seed;
     d["threads"] = defaults.threads;
+    d["self_intersections"] = to_string(defaults.self_intersections);
     m.attr("DEFAULT_OPTIONS") = d;
   }
   m.def(
       "_mesh",
       [](const py::object& model, double lipschitz, double sharp_angle, const py::object& max_size,
          const py::object& sizing, int smoothing_iterations, const std::string& interior, int cvt_iterations,
-         const std::string& stop_after, std::uint64_t seed, int threads, bool allow_self_intersections,
+         const std::string& stop_after, std::uint64_t seed, int threads, const std::string& self_intersections,
          const std::optional<std::array<double, 6>>& box, const py::object& progress) {
         MeshOptions options;
         options.lipschitz = lipschitz;
@@ -238,11 +248,12 @@ the same document as the CLI's OUTDIR/report.json.
         options.seed = seed;
         options.threads = threads;
         options.box = box;
-        return run_mesh(model, options, allow_self_intersections, progress);
+        options.self_intersections = self_intersections_named(self_intersections);
+        return run_mesh(model, options, progress);
       },
       py::arg("model"), py::arg("lipschitz"), py::arg("sharp_angle"), py::arg("max_size"), py::arg("sizing"),
       py::arg("smoothing_iterations"), py::arg("interior"), py::arg("cvt_iterations"), py::arg("stop_after"),
-      py::arg("seed"), py::arg("threads"), py::arg("allow_self_intersections"), py::arg("box"), py::arg("progress"),
+      py::arg("seed"), py::arg("threads"), py::arg("self_intersections"), py::arg("box"), py::arg("progress"),
       "The pipeline behind vorocrust.mesh(), which documents the arguments.");
 }
 

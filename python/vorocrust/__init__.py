@@ -85,7 +85,7 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_O
          max_size=None, sizing=None, smoothing_iterations=DEFAULT_OPTIONS["smoothing_iterations"],
          interior=DEFAULT_OPTIONS["interior"], cvt_iterations=DEFAULT_OPTIONS["cvt_iterations"],
          stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
-         allow_self_intersections=False, box=None, progress=None):
+         self_intersections=DEFAULT_OPTIONS["self_intersections"], box=None, progress=None):
     """Meshes a model: `vorocrust mesh` without the files. Returns a MeshResult.
 
     model: a file path, a list of paths (merged into one model, one group per file), a
@@ -101,7 +101,10 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_O
     stop_after: "balls", "surface" or "cells" (the whole mesh).
     seed: random seed; equal model, options and seed give equal results.
     threads: worker threads, 0 for all cores; results do not depend on it.
-    allow_self_intersections: mesh even when input faces intersect each other.
+    self_intersections: faces that cut through each other: "resolve" cuts them along their
+        intersection curves, which become creases, each new piece of space joining a region of
+        the input; "refuse" raises InvalidGeometryError naming them; "keep" meshes them as they
+        are (--self-intersections).
     box: (xmin, ymin, zmin, xmax, ymax, zmax), the domain around open sheets (--box): its sides
         join the surface and what no material fills inside it becomes the material "domain".
         None: a model with open edges gets its bounding box grown by a tenth of its diagonal on
@@ -122,7 +125,7 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_O
         max_size=None if max_size is None or math.isinf(max_size) else float(max_size), sizing=sizing,
         smoothing_iterations=int(smoothing_iterations), interior=interior,
         cvt_iterations=int(cvt_iterations), stop_after=stop_after, seed=int(seed), threads=int(threads),
-        allow_self_intersections=bool(allow_self_intersections),
+        self_intersections=self_intersections,
         box=None if box is None else tuple(float(x) for x in box), progress=progress)
 
 

@@ -213,21 +213,36 @@ class Mesh(unittest.TestCase):
 
     def test_quiet_prints_only_the_error(self):
         with tempfile.TemporaryDirectory() as out:
-            r = run("mesh", os.path.join(DATA, "invalid", "cube_pierced.off"), "-o", out, "--quiet")
+            r = run("mesh", os.path.join(DATA, "invalid", "cube_pierced.off"), "-o", out, "--quiet",
+                    "--self-intersections", "refuse")
             self.assertEqual(r.returncode, 4)
             self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
 
-    def test_invalid_input_stops_before_meshing_and_says_why(self):
+    def test_self_intersections_are_resolved_refused_or_kept(self):
+        pierced = os.path.join(DATA, "invalid", "cube_pierced.off")
         with tempfile.TemporaryDirectory() as out:
-            r = run("mesh", os.path.join(DATA, "invalid", "cube_pierced.off"), "-o", out)
+            # By default the faces are cut where they cross: the warning names them, the run goes on.
+            r = run("mesh", pierced, "-o", out, "--stop-after", "balls")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("warning: 4 pairs of intersecting faces", r.stderr)
+            self.assertIn("self-intersections resolved", r.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            self.assertEqual(report["options"]["self_intersections"], "resolve")
+            resolved = report["self_intersections"]
+            self.assertEqual(resolved["face_pairs"], 4)
+            self.assertGreater(resolved["faces_cut"], 0)
+            self.assertGreater(resolved["faces"], 13)
+            # Asked to, the run stops before meshing and says how to go on.
+            r = run("mesh", pierced, "-o", out, "--self-intersections", "refuse")
             self.assertEqual(r.returncode, 4)
-            self.assertIn("--allow-self-intersections", r.stderr)
+            self.assertIn("pairs of intersecting faces", r.stderr)
+            self.assertIn("--self-intersections resolve", r.stderr)
             with open(os.path.join(out, "report.json")) as f:
                 self.assertEqual(json.load(f)["status"], "invalid geometry")
-            # Overridden, meshing goes on; the curve where the surfaces cross is no feature, so the
-            # balls cannot converge there, and the run ends with a message naming a face.
-            r = run("mesh", os.path.join(DATA, "invalid", "cube_pierced.off"), "-o", out,
-                    "--allow-self-intersections", "--stop-after", "balls")
+            # Kept as they are, the curve where the surfaces cross is no feature, so the balls
+            # cannot converge there, and the run ends with a message naming a face.
+            r = run("mesh", pierced, "-o", out, "--self-intersections", "keep", "--stop-after", "balls")
             self.assertEqual(r.returncode, 4, r.stderr)
             self.assertIn("refinement cannot converge", r.stderr)
             self.assertIn("cube_pierced.off line", r.stderr)

@@ -251,14 +251,14 @@ def script(path, filter_name, **parameters):
     return path
 
 
-def balls_script(path, seed=SEED, lipschitz=0.25):
+def balls_script(path, seed=SEED, lipschitz=0.25, resolve=True):
     return script(path, "VoroCrust Protecting Balls", lipschitz=lipschitz, sharpAngle=30.0,
-                  maxSize=("abs", 0.0), seed=seed)
+                  maxSize=("abs", 0.0), seed=seed, resolveSelfIntersections=resolve)
 
 
-def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20, all_visible=False):
+def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20, all_visible=False, resolve=True):
     return script(path, "VoroCrust Voronoi Mesh", lipschitz=0.25, sharpAngle=30.0, maxSize=("abs", 0.0), seed=seed,
-                  interior=("enum", 0), cvtIterations=cvt_iterations, outputFolder=folder, writeVtu=vtu,
+                  resolveSelfIntersections=resolve, interior=("enum", 0), cvtIterations=cvt_iterations, outputFolder=folder, writeVtu=vtu,
                   writeOpenFoam=openfoam, writeTough=openfoam, writePflotran=openfoam, writeSeeds=True,
                   writeSurface=True, allVisibleLayers=all_visible)
 
@@ -488,8 +488,17 @@ class MeshLabCase(unittest.TestCase):
     def case_invalid(self):
         mlx = balls_script(os.path.join(self.work, "balls.mlx"))
         data = ARGS.data
+        with self.subTest(input="a pierced cube, its self-intersections refused"):
+            self.assert_fails_with(os.path.join(data, "invalid/cube_pierced.off"),
+                                   balls_script(os.path.join(self.work, "refuse.mlx"), resolve=False),
+                                   "VoroCrust: invalid geometry:", "pairs of intersecting faces")
+        with self.subTest(input="a pierced cube, its self-intersections resolved"):
+            status, output = self.meshlabserver("-i", os.path.join(data, "invalid/cube_pierced.off"), "-o",
+                                                os.path.join(self.work, "pierced.ply"), "-s", mlx)
+            self.assertEqual(status, 0, output[-3000:])
+            self.assertIn("warning: 4 pairs of intersecting faces", output)
+            self.assertIn("self-intersections resolved", output)
         cases = [
-            ("invalid/cube_pierced.off", ["VoroCrust: invalid geometry:", "pairs of intersecting faces"]),
             ("invalid/cube_zero_area.off", ["VoroCrust: invalid geometry:", "faces with zero area"]),
             ("bad/all_nan.off", ["VoroCrust: invalid geometry:", "NaN or infinite coordinate"]),
             ("bad/infinity.off", ["VoroCrust: invalid geometry:", "vertex 1 ", "NaN or infinite coordinate"]),
@@ -504,9 +513,9 @@ class MeshLabCase(unittest.TestCase):
                                    "VoroCrust: usage error:", "lipschitz must lie strictly between 0 and 1")
         # The Voronoi Mesh filter: the same validation, its own parameters and its output folder.
         folder = os.path.join(self.work, "voronoi")
-        with self.subTest(input="the Voronoi Mesh filter on a pierced cube"):
+        with self.subTest(input="the Voronoi Mesh filter on a pierced cube, its self-intersections refused"):
             self.assert_fails_with(os.path.join(data, "invalid/cube_pierced.off"),
-                                   voronoi_script(os.path.join(self.work, "v.mlx"), folder, False, False),
+                                   voronoi_script(os.path.join(self.work, "v.mlx"), folder, False, False, resolve=False),
                                    "VoroCrust: invalid geometry:", "pairs of intersecting faces")
         with self.subTest(input="negative CVT iterations"):
             self.assert_fails_with(cube, voronoi_script(os.path.join(self.work, "v_cvt.mlx"), folder, False, False,

@@ -361,12 +361,19 @@ class Errors(unittest.TestCase):
         self.assertTrue(str(caught.exception).startswith(path + ":"), str(caught.exception))
         self.assertIsNotNone(caught.exception.line)
 
-    def test_self_intersections_are_refused_unless_allowed(self):
+    def test_self_intersections_are_resolved_unless_refused(self):
         path = os.path.join(DATA, "invalid", "cube_pierced.off")
+        self.assertEqual(vorocrust.DEFAULT_OPTIONS["self_intersections"], "resolve")
+        run = vorocrust.mesh(path, stop_after="balls")
+        resolved = run.report()["self_intersections"]
+        self.assertEqual(resolved["face_pairs"], 4)
+        self.assertGreater(resolved["faces_cut"], 0)
         with self.assertRaises(vorocrust.InvalidGeometryError) as caught:
-            vorocrust.mesh(path, stop_after="balls")
+            vorocrust.mesh(path, stop_after="balls", self_intersections="refuse")
         self.assertIn("cube_pierced.off line", str(caught.exception))
-        self.assertIn("allow_self_intersections=True", str(caught.exception))
+        self.assertIn('self_intersections="resolve"', str(caught.exception))
+        with self.assertRaises(vorocrust.UsageError):
+            vorocrust.mesh(path, stop_after="balls", self_intersections="ignore")
         findings = vorocrust.validate(vorocrust.read_mesh(path))
         self.assertTrue(findings["has_errors"])
         self.assertEqual([f["code"] for f in findings["findings"] if f["severity"] == "error"], ["self-intersection"])

@@ -1,10 +1,8 @@
 // The regions of space a surface cuts out: wedges around edges, shells, nesting, given labels.
 #include <gtest/gtest.h>
 
-#include <map>
-#include <tuple>
-
 #include "regions/radial_order.hpp"
+#include "surface_builder.hpp"
 #include "test_support.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/merge_surfaces.hpp"
@@ -16,39 +14,7 @@
 namespace vorocrust {
 namespace {
 
-// Builds surfaces from boxes and quads, sharing vertices with exactly equal coordinates.
-class Builder {
- public:
-  Builder() { mesh.groups.push_back({"built", ""}); }
-
-  Index vertex(double x, double y, double z) {
-    const auto [it, fresh] = index_.try_emplace({x, y, z}, static_cast<Index>(mesh.vertices.size()));
-    if (fresh) mesh.vertices.emplace_back(x, y, z);
-    return it->second;
-  }
-  // Quad a b c d as two triangles, normal by the right-hand rule.
-  void quad(const Point& a, const Point& b, const Point& c, const Point& d) {
-    const Index ia = vertex(a.x(), a.y(), a.z()), ib = vertex(b.x(), b.y(), b.z()), ic = vertex(c.x(), c.y(), c.z()),
-                id = vertex(d.x(), d.y(), d.z());
-    mesh.add_triangle({ia, ib, ic}, 0);
-    mesh.add_triangle({ia, ic, id}, 0);
-  }
-  // The six sides of [lo, hi], normals out; `skip` leaves out the side x = hi.x (for walls).
-  void box(const Point& lo, const Point& hi, bool skip_high_x = false) {
-    const auto p = [&](int i) { return Point(i & 1 ? hi.x() : lo.x(), i & 2 ? hi.y() : lo.y(), i & 4 ? hi.z() : lo.z()); };
-    quad(p(0), p(4), p(6), p(2));
-    if (!skip_high_x) quad(p(1), p(3), p(7), p(5));
-    quad(p(0), p(1), p(5), p(4));
-    quad(p(2), p(6), p(7), p(3));
-    quad(p(0), p(2), p(3), p(1));
-    quad(p(4), p(5), p(7), p(6));
-  }
-
-  SurfaceMesh mesh;
-
- private:
-  std::map<std::tuple<double, double, double>, Index> index_;
-};
+using Builder = test::SurfaceBuilder;
 
 std::size_t faces_with(const SurfaceMesh& m, RegionPair pair) {
   std::size_t n = 0;

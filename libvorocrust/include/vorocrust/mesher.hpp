@@ -19,6 +19,7 @@
 #include "vorocrust/cell_quality.hpp"
 #include "vorocrust/quality.hpp"
 #include "vorocrust/regions.hpp"
+#include "vorocrust/resolve_self_intersections.hpp"
 #include "vorocrust/seeds.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
@@ -37,6 +38,16 @@ enum class Stage { Balls, Surface, Cells };
 enum class InteriorMode { Random, Lattice, Cvt };
 
 const char* to_string(InteriorMode mode) noexcept;
+
+// What becomes of faces that cut through each other:
+// - Resolve: they are cut along their intersection curves, which become creases, and each new
+//   piece of space joins a region of the input (resolve_self_intersections.hpp);
+// - Refuse: the front ends stop with the validation's error naming the faces;
+// - Keep: meshed as they are, which rarely ends well (the refinement cannot cover a surface
+//   that crosses itself).
+enum class SelfIntersections { Resolve, Refuse, Keep };
+
+const char* to_string(SelfIntersections mode) noexcept;
 
 struct MeshOptions {
   double lipschitz = 0.25;  // L < 1: how fast ball radii may vary
@@ -58,6 +69,7 @@ struct MeshOptions {
   // touching it. Without a box, an input with open edges gets its bounding box grown by a tenth
   // of its diagonal on every side; a closed input gets none.
   std::optional<std::array<double, 6>> box;
+  SelfIntersections self_intersections = SelfIntersections::Resolve;
   InteriorMode interior = InteriorMode::Random;
   int cvt_iterations = 20;  // Lloyd iterations of InteriorMode::Cvt
   Stage stop_after = Stage::Cells;
@@ -137,6 +149,8 @@ struct MeshResult {
   std::vector<PhaseTiming> timings;
   // The regions of space the input cuts out (label_regions), indexed by label: 0 outside.
   std::vector<RegionSummary> regions;
+  // What cutting the faces that cross each other did (all zero faces_cut when none did).
+  SelfIntersectionStats self_intersections;
   FeatureCounts features;
   // The surface the balls cover: the input, with the box's sides when it has one, after patch
   // smoothing (paper 2.2), which keeps every sharp feature exactly and moves only vertices

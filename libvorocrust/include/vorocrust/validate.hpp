@@ -24,7 +24,7 @@ struct Finding {
     Note,     // worth knowing, harmless
     Fixed,    // was wrong, has been repaired in place
     Warning,  // suspicious; meshing proceeds
-    Error,    // meshing refuses this input (self-intersections unless overridden)
+    Error,    // meshing refuses this input
   };
   Severity severity = Severity::Note;
   std::string code;     // stable identifier, e.g. "self-intersection"
@@ -39,6 +39,9 @@ const char* to_string(Finding::Severity severity) noexcept;
 struct ValidationOptions {
   bool fix_orientation = true;
   bool check_self_intersections = true;
+  // Whether intersecting faces are an Error (meshing refuses them) or a Warning (the mesher
+  // resolves them, MeshOptions::self_intersections).
+  bool self_intersections_are_errors = true;
   std::size_t max_listed = 20;  // faces or pairs named per finding
 };
 

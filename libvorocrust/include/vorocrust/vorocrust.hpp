@@ -14,6 +14,7 @@
 #include "vorocrust/quality_svg.hpp"
 #include "vorocrust/read_mesh.hpp"
 #include "vorocrust/regions.hpp"
+#include "vorocrust/resolve_self_intersections.hpp"
 #include "vorocrust/report.hpp"
 #include "vorocrust/surface_from_arrays.hpp"
 #include "vorocrust/surface_mesh.hpp"

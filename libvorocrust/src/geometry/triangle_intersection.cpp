@@ -15,30 +15,8 @@
 namespace vorocrust::geometry {
 namespace {
 
-// The two coordinates kept when a plane is projected along its third axis. The projection is a
-// bijection of the plane iff the plane's normal has a nonzero component along the dropped axis;
-// then 2D orientations of projected points of that plane are exact stand-ins for 3D ones.
-struct Projection {
-  int x, y;
-};
-
 int orient2d(const Point& a, const Point& b, const Point& c, Projection p) {
   return geometry::orient2d(a[p.x], a[p.y], b[p.x], b[p.y], c[p.x], c[p.y]);
-}
-
-// A projection that keeps t non-degenerate, or none when t has zero area. The projected area
-// along axis k is exactly the k-th component of t's normal, so orient2d certifies the choice;
-// the largest floating normal component merely suggests which axis to try first.
-std::optional<Projection> projection_of(const TriangleCorners& t) {
-  const Point n = (t[1] - t[0]).cross(t[2] - t[0]).cwiseAbs();
-  int order[3] = {0, 1, 2};
-  if (n[order[1]] > n[order[0]]) std::swap(order[0], order[1]);
-  if (n[order[2]] > n[order[0]]) std::swap(order[0], order[2]);
-  for (int dropped : order) {
-    const Projection p{(dropped + 1) % 3, (dropped + 2) % 3};
-    if (orient2d(t[0], t[1], t[2], p) != 0) return p;
-  }
-  return std::nullopt;
 }
 
 bool mixed_signs(int a, int b, int c) {
@@ -161,6 +139,21 @@ TriangleCorners rotated(const TriangleCorners& t, int first) {
 }
 
 }  // namespace
+
+// A projection that keeps t non-degenerate, or none when t has zero area. The projected area
+// along axis k is exactly the k-th component of t's normal, so orient2d certifies the choice;
+// the largest floating normal component merely suggests which axis to try first.
+std::optional<Projection> projection_of(const TriangleCorners& t) {
+  const Point n = (t[1] - t[0]).cross(t[2] - t[0]).cwiseAbs();
+  int order[3] = {0, 1, 2};
+  if (n[order[1]] > n[order[0]]) std::swap(order[0], order[1]);
+  if (n[order[2]] > n[order[0]]) std::swap(order[0], order[2]);
+  for (int dropped : order) {
+    const Projection p{(dropped + 1) % 3, (dropped + 2) % 3};
+    if (orient2d(t[0], t[1], t[2], p) != 0) return p;
+  }
+  return std::nullopt;
+}
 
 SharedCorners shared_corners(const Triangle& first, const Triangle& second) {
   SharedCorners shared = kNoSharedCorners;

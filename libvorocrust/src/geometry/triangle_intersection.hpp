@@ -13,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "vorocrust/surface_mesh.hpp"
 
@@ -27,6 +28,17 @@ using SharedCorners = std::array<int, 3>;
 inline constexpr SharedCorners kNoSharedCorners = {-1, -1, -1};
 
 SharedCorners shared_corners(const Triangle& first, const Triangle& second);
+
+// The two coordinates kept when a plane is projected along its third axis. The projection is a
+// bijection of the plane iff the plane's normal has a nonzero component along the dropped axis;
+// then 2D orientations of projected points of that plane are exact stand-ins for 3D ones.
+struct Projection {
+  int x, y;
+};
+
+// A projection that keeps t non-degenerate (the axis of t's largest normal component when that
+// one certifiably works), or none when t has zero area.
+std::optional<Projection> projection_of(const TriangleCorners& t);
 
 // True when the three corners are collinear (including coincident), decided exactly.
 bool is_degenerate(const TriangleCorners& t);

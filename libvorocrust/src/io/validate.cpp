@@ -180,8 +180,8 @@ void fix_orientation(SurfaceMesh& mesh, const EdgeTopology& topo, const Validati
 void check_self_intersections(const SurfaceMesh& mesh, const ValidationOptions& options, ValidationReport& report) {
   const auto pairs = geometry::find_self_intersections(mesh);
   if (!pairs.empty()) {
-    Finding f = pair_finding(mesh, Finding::Severity::Error, "self-intersection", "pairs of intersecting faces", pairs,
-                             options.max_listed);
+    const auto severity = options.self_intersections_are_errors ? Finding::Severity::Error : Finding::Severity::Warning;
+    Finding f = pair_finding(mesh, severity, "self-intersection", "pairs of intersecting faces", pairs, options.max_listed);
     report.findings.push_back(std::move(f));
   }
 }

@@ -35,6 +35,15 @@ void MeshOptions::check() const {
   if (cvt_iterations < 0) throw Error(Error::Kind::Usage, "--cvt-iterations must be 0 or positive");
 }
 
+const char* to_string(SelfIntersections mode) noexcept {
+  switch (mode) {
+    case SelfIntersections::Resolve: return "resolve";
+    case SelfIntersections::Refuse: return "refuse";
+    case SelfIntersections::Keep: return "keep";
+  }
+  return "?";
+}
+
 const char* to_string(InteriorMode mode) noexcept {
   switch (mode) {
     case InteriorMode::Random: return "random";
@@ -74,6 +83,11 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
     input = enclose_in_box(model, geometry::Box{Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5])});
   } else if (needs_box(model)) {
     input = enclose_in_box(model, default_box(model));
+  }
+  // Faces crossing each other cut along their intersection curves, the pieces of space between
+  // them joined to the input's regions.
+  if (options.self_intersections == SelfIntersections::Resolve) {
+    input = clock("self-intersections", [&] { return resolve_self_intersections(input, &result.self_intersections); });
   }
   // The regions of space the surface cuts out, each side of each face labelled.
   result.regions = clock("regions", [&] { return label_regions(input); });

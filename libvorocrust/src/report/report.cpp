@@ -198,6 +198,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                 {"stop_after", o.stop_after == Stage::Balls     ? "balls"
                                : o.stop_after == Stage::Surface ? "surface"
                                                                 : "cells"},
+                {"self_intersections", to_string(o.self_intersections)},
                 {"interior", to_string(o.interior)},
                 {"cvt_iterations", o.cvt_iterations},
                 {"box", o.box ? json(*o.box) : json(nullptr)},
@@ -209,6 +210,10 @@ std::string run_report_json(const RunReport& report, int indent) {
               {"total_seconds", total}};
   if (report.result) {
     doc["regions"] = regions_object(report.result->regions);
+    const SelfIntersectionStats& s = report.result->self_intersections;
+    doc["self_intersections"] = {{"face_pairs", s.face_pairs},     {"faces_cut", s.faces_cut},
+                                 {"points_added", s.points_added}, {"faces_dropped", s.faces_dropped},
+                                 {"faces", s.faces}};
     const FeatureCounts& f = report.result->features;
     const RefinementStats& r = report.result->refinement;
     doc["features"] = {{"sharp_edges", f.sharp_edges}, {"corners", f.corners},  {"creases", f.creases},
