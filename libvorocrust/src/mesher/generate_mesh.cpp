@@ -87,6 +87,7 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   // Faces crossing each other cut along their intersection curves, the pieces of space between
   // them joined to the input's regions.
   if (options.self_intersections == SelfIntersections::Resolve) {
+    if (progress && !progress({"self-intersections", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
     input = clock("self-intersections", [&] { return resolve_self_intersections(input, &result.self_intersections); });
   }
   // The regions of space the surface cuts out, each side of each face labelled.

@@ -148,8 +148,9 @@ class BallRefinement::Impl {
   bool covered(StratumType type, const SurfaceSite& site);
   double initial_radius(const SurfaceSite& site);
   void shrink_neighbours_for_lipschitz(std::uint32_t ball);
-  // Balls of every type that reach piece i of the pool.
-  void reaching(const Pool& pool, std::size_t i, std::vector<std::uint32_t>& out) const;
+  // Balls of every type that reach piece i of the pool; `fresh` holds the balls that came since
+  // the pool was made.
+  void reaching(const Pool& pool, std::size_t i, const BallTree& fresh, std::vector<std::uint32_t>& out) const;
   void classify(StratumType type, const Subface& s, const std::vector<std::uint32_t>& reaching,
                 std::vector<Candidate>& out) const;
   bool covers(const Subface& s, const std::vector<Candidate>& candidates, std::vector<CoverBall>& cover) const;
@@ -328,7 +329,8 @@ SurfaceSite BallRefinement::Impl::site_on(const Subface& s, const Point& p) cons
   return s.is_segment() ? crease_site(strata_, s.element, p) : patch_site(strata_, s.element, p);
 }
 
-void BallRefinement::Impl::reaching(const Pool& pool, std::size_t i, std::vector<std::uint32_t>& out) const {
+void BallRefinement::Impl::reaching(const Pool& pool, std::size_t i, const BallTree& fresh,
+                                    std::vector<std::uint32_t>& out) const {
   out.clear();
   const Subface& s = pool.pieces[i];
   const Point centroid = s.centroid();
@@ -338,7 +340,11 @@ void BallRefinement::Impl::reaching(const Pool& pool, std::size_t i, std::vector
     const double limit = ball.radius + reach;
     if ((ball.site.position - centroid).squaredNorm() < limit * limit) out.push_back(pool.reaching[k]);
   }
-  for (int t = 0; t < 3; ++t) balls_.reaching(static_cast<StratumType>(t), centroid, reach, out, pool.known);
+  fresh.search(
+      centroid, [&](double d2, double max_radius, std::uint32_t) { return d2 < (max_radius + reach) * (max_radius + reach); },
+      [&](const BallTree::Sphere& s) {
+        if ((s.centre - centroid).squaredNorm() < (s.radius + reach) * (s.radius + reach)) out.push_back(s.ball);
+      });
 }
 
 // What each ball reaching a piece can do for the piece's children, worked out once for all four:
@@ -476,12 +482,16 @@ Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool la
     std::array<std::uint32_t, 4> reaching_count{};
   };
   std::vector<Outcome> outcomes(pool.pieces.size());
+  // The balls that came since the pool was made, in a tree of their own: in the tree of all balls
+  // the old balls' radii bound every subtree, and a query visits far more of it.
+  BallTree fresh;
+  for (std::uint32_t b = pool.known; b < balls_.size(); ++b) fresh.insert(balls_[b].site.position, balls_[b].radius, b);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pool.pieces.size(), 256), [&](const auto& range) {
     std::vector<std::uint32_t> found;
     std::vector<Candidate> candidates;
     std::vector<CoverBall> cover;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      reaching(pool, i, found);
+      reaching(pool, i, fresh, found);
       classify(type, pool.pieces[i], found, candidates);
       const auto children = pool.pieces[i].split();
       Outcome& outcome = outcomes[i];
