@@ -40,6 +40,10 @@ CASES = [
     ("cgal_cubes_edge_contact.off", 2),
     ("openmeeg_HeadNNb3.obj", 5),  # nested shells
     ("openmeeg_HeadNNc3.obj", 4),  # non-manifold: north and south halves inside the skull
+    # Non-manifold and self-intersecting: the south half pokes through the skull (30 face pairs),
+    # which the mesher resolves; the voxel fill of the input as it is sees the thin pockets between
+    # the crossing faces as regions of their own.
+    ("openmeeg_HeadNNa1.obj", 4),
 ]
 # The voxel flood fill's volumes are off by about the surface area times a grid step over 4.
 VOXEL_TOLERANCE = 0.025
@@ -90,7 +94,8 @@ class MultiMaterial(unittest.TestCase):
         # region of its own, whose volume it matches.
         vertices, triangles = read_triangles(os.path.join(MODELS, model))
         voxels = VoxelRegions(vertices, triangles, n=160)
-        self.assertEqual(len(voxels.bounded_regions()), expected_regions)
+        if report["self_intersections"]["faces_cut"] == 0:
+            self.assertEqual(len(voxels.bounded_regions()), expected_regions)
         largest = {}
         for c, (m, v) in enumerate(zip(material, volume)):
             if v > largest.get(m, (-1, 0))[1]:
@@ -102,6 +107,9 @@ class MultiMaterial(unittest.TestCase):
                       for k in range(3)]
             matched[m] = voxels.region_at(centre)
         self.assertEqual(len(set(matched.values())), len(matched), "two materials in one voxel region")
+        # Voxel regions no material matched are the pockets where faces cross: a sliver of the whole.
+        pockets = sum(voxels.volume(r) for r in voxels.bounded_regions() if r not in matched.values())
+        self.assertLess(pockets, 1e-3 * total)
         for m, region in matched.items():
             self.assertNotEqual(region, voxels.outside)
             self.assertAlmostEqual(by_material[m], voxels.volume(region), delta=VOXEL_TOLERANCE * voxels.volume(region),
@@ -148,8 +156,13 @@ class MultiMaterial(unittest.TestCase):
                          sorted(("%s_to_%s" % (names[a], names[b]), interface_pairs[(a, b)]) for a, b in internal_pairs))
         skew = re.search(r"(\d+) highly skew faces", r.stdout)
         self.assertEqual([line for line in r.stdout.splitlines() if "***" in line and "skewness" not in line], [])
-        # Mesh OK: the skew repair leaves no highly skew face on any of these models.
-        self.assertIn("\nMesh OK.", r.stdout, r.stdout[-2500:])
+        # Mesh OK: the skew repair leaves no highly skew face on any of these models, but for a few
+        # in the thin wedges where HeadNNa1's south half crosses its skull at about 20 degrees.
+        if report["self_intersections"]["faces_cut"] == 0:
+            self.assertIn("\nMesh OK.", r.stdout, r.stdout[-2500:])
+        else:
+            self.assertLessEqual(int(skew.group(1)) if skew else 0, 8, r.stdout[-2500:])
+            self.assertIn("Failed 1 mesh checks", r.stdout)  # skewness alone
         self.assertEqual(report["cells"]["quality"]["skewness"]["highly_skew_faces"], int(skew.group(1)) if skew else 0)
 
         # The simulators' files hold the same mesh.

@@ -17,6 +17,15 @@ namespace {
 constexpr StratumType kTypes[] = {StratumType::Corner, StratumType::Crease, StratumType::Patch};
 // Two seeds placed on spheres stay this fraction of the ball's radius apart.
 constexpr double kSpacing = 0.1;
+// A seed placed on one sphere stays this far outside every other ball, in radii, unless it lies
+// on that ball's sphere too: just outside a sphere, it would move the Voronoi vertex at the
+// ball's centre that the seeds on the sphere share off it, leaving a small skew face there.
+constexpr double kClearance = 1.05;
+constexpr std::uint32_t kNoBall = static_cast<std::uint32_t>(-1);
+// A skew face whose centroid lies this near a ball's centre, in radii, may take a seed on its
+// sphere this much nearer the seeds placed than kSpacing.
+constexpr double kNearCentre = 0.5;
+constexpr double kCloseSpacing = 0.01;
 // A material's seeds must agree on a direction this well (the length of their mean unit
 // vector) for a pole: seeds spread all round the sphere (a sheet with one material on both
 // sides) have no middle.
@@ -43,25 +52,36 @@ class SphereSeeds {
   SphereSeeds(const BallIndex& balls, const RegionLocator& regions) : balls_(balls), regions_(regions) {}
 
   void remember(const Seed& s) { placed_.insert(s.position, kSpacing * s.radius, count_++); }
-  bool near_placed(const Point& p) const { return placed_.contains(p); }
+  // Whether p lies within `spacing` (a fraction of kSpacing) of the radius of a seed placed.
+  bool near_placed(const Point& p, double spacing = 1) const { return placed_.contains(p, spacing); }
 
-  // The seed of material `region` at direction u (unit) on ball b's sphere, if it may go there.
-  std::optional<Seed> place(std::uint32_t b, const Point& u, std::int32_t region) {
+  // The seed of material `region` at direction u (unit) on ball b's sphere, if it may go there;
+  // `spacing` scales the distance it keeps from the seeds placed.
+  std::optional<Seed> place(std::uint32_t b, const Point& u, std::int32_t region, double spacing = 1) {
     const Point& centre = balls_[b].site.position;
     const double r = balls_[b].radius;
     const Point p = centre + r * u;
-    for (StratumType type : kTypes) {
-      near_.clear();
-      balls_.reaching(type, p, 0, near_);
-      for (std::uint32_t q : near_) {
-        if (q != b) return std::nullopt;  // inside another ball: it would cut into the surface
-      }
-    }
-    if (near_placed(p)) return std::nullopt;
+    if (!clear_of_balls(p, b)) return std::nullopt;
+    if (near_placed(p, spacing)) return std::nullopt;
     if (regions_.region_of(p, u) != region) return std::nullopt;
     Seed s{p, region, r, SeedKind::Cap};
     remember(s);
     return s;
+  }
+
+  // Whether p lies inside no ball but `own` (it would cut into the surface) and clear of their
+  // spheres but where it lies on one.
+  bool clear_of_balls(const Point& p, std::uint32_t own) {
+    for (StratumType type : kTypes) {
+      near_.clear();
+      balls_.reaching_scaled(type, p, kClearance, 0, near_);
+      for (std::uint32_t q : near_) {
+        if (q == own) continue;
+        const double d = (p - balls_[q].site.position).norm();
+        if (std::abs(d - balls_[q].radius) > 1e-9 * balls_[q].radius) return false;
+      }
+    }
+    return true;
   }
 
  private:
@@ -136,7 +156,10 @@ std::vector<Seed> skew_repair_seeds(const VoronoiMesh& cells, const std::vector<
     for (const auto& [order, q] : candidates) {
       const Point towards = g.centroid - balls[q].site.position;
       if (!(towards.norm() > 0)) continue;
-      if (const std::optional<Seed> seed = place.place(q, towards.normalized(), region)) {
+      // A face near the centre is a sliver about it (a seed just off the sphere moved the shared
+      // vertex there): it needs the seed toward it, however close the seeds already placed.
+      const double spacing = towards.norm() < kNearCentre * balls[q].radius ? kCloseSpacing : 1;
+      if (const std::optional<Seed> seed = place.place(q, towards.normalized(), region, spacing)) {
         added.push_back(*seed);
         repaired = true;
         break;
@@ -147,7 +170,7 @@ std::vector<Seed> skew_repair_seeds(const VoronoiMesh& cells, const std::vector<
     // seed): a seed at the face's centroid, where no ball reaches, takes the small face's corner
     // of both cells. No seed is nearer there than the two the face is equidistant from.
     const double clearance = (g.centroid - s.position).norm();
-    if (!balls.covers(g.centroid) && clearance > 0 &&
+    if (place.clear_of_balls(g.centroid, kNoBall) && clearance > 0 &&
         regions.region_of(g.centroid, g.normal) == region && !place.near_placed(g.centroid)) {
       Seed seed{g.centroid, region, clearance, SeedKind::Interior};
       place.remember(seed);

@@ -16,6 +16,7 @@
 #include "seeds/surface_seeds.hpp"
 #include "refinement/sizing_field.hpp"
 #include "vorocrust/error.hpp"
+#include "vorocrust/face_skewness.hpp"
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/regions.hpp"
 
@@ -194,9 +195,12 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
     return cells->mesh();
   });
   // Faces still highly skew about a ball's centre get a seed on its sphere, and the cells about
-  // the new seeds are cut again, a few rounds at most (interior/cap_seeds.hpp).
-  constexpr int kRepairRounds = 3;
-  for (int round = 0; round < kRepairRounds; ++round) {
+  // the new seeds are cut again (interior/cap_seeds.hpp). A repair seed in a thin wedge between
+  // crossing surfaces can make a skew face beside the one it removes, so rounds go on while the
+  // count falls: two rounds without a fall, or a round with no seed to place, end it.
+  constexpr int kRepairRounds = 24;
+  std::size_t fewest_skew = skew_faces(result.cells).size();
+  for (int round = 0, stalled = 0; round < kRepairRounds && stalled < 2 && fewest_skew > 0; ++round) {
     if (progress && !progress({"skew repair", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
     const std::vector<Seed> repairs = clock("skew repair", [&] {
       return skew_repair_seeds(result.cells, result.seeds, refinement.index(), regions, caps);
@@ -210,6 +214,9 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
       cells->add_seeds(result.seeds);
       return cells->mesh();
     });
+    const std::size_t skew = skew_faces(result.cells).size();
+    stalled = skew < fewest_skew ? 0 : stalled + 1;
+    fewest_skew = std::min(fewest_skew, skew);
   }
   for (const Seed& s : result.seeds) {
     if (s.kind == SeedKind::Outside) ++result.interior.outside_seeds;
