@@ -71,20 +71,44 @@ class SphereSeeds {
 
   // Whether p lies inside no ball but `own` (it would cut into the surface) and clear of their
   // spheres but where it lies on one.
-  bool clear_of_balls(const Point& p, std::uint32_t own) {
+  bool clear_of_balls(const Point& p, std::uint32_t own) { return !blocking_ball(p, own); }
+
+  // p moved out of the balls that hold it or lie too near, each time radially to the clearance
+  // of the one nearest to holding it, a few times at most; nothing when it does not get clear.
+  std::optional<Point> pushed_clear(Point p) {
+    for (int step = 0; step < 12; ++step) {
+      const std::optional<std::uint32_t> q = blocking_ball(p, kNoBall);
+      if (!q) return p;
+      const Point& centre = balls_[*q].site.position;
+      const Point away = p - centre;
+      if (!(away.norm() > 0)) return std::nullopt;
+      p = centre + kClearance * (1 + 1e-9) * balls_[*q].radius * away.normalized();
+    }
+    return std::nullopt;
+  }
+
+ private:
+  // The ball p is deepest in, in radii, among those it lies inside or within the clearance of
+  // (other than `own`, and than those on whose sphere it lies).
+  std::optional<std::uint32_t> blocking_ball(const Point& p, std::uint32_t own) {
+    std::optional<std::uint32_t> deepest;
+    double depth = 0;
     for (StratumType type : kTypes) {
       near_.clear();
       balls_.reaching_scaled(type, p, kClearance, 0, near_);
       for (std::uint32_t q : near_) {
         if (q == own) continue;
         const double d = (p - balls_[q].site.position).norm();
-        if (std::abs(d - balls_[q].radius) > 1e-9 * balls_[q].radius) return false;
+        if (std::abs(d - balls_[q].radius) <= 1e-9 * balls_[q].radius) continue;
+        if (!deepest || d / balls_[q].radius < depth) {
+          deepest = q;
+          depth = d / balls_[q].radius;
+        }
       }
     }
-    return true;
+    return deepest;
   }
 
- private:
   const BallIndex& balls_;
   const RegionLocator& regions_;
   BallTree placed_;
@@ -167,12 +191,13 @@ std::vector<Seed> skew_repair_seeds(const VoronoiMesh& cells, const std::vector<
     }
     if (repaired) continue;
     // No sphere takes one (a face between two seeds on no common sphere, often one a repair
-    // seed): a seed at the face's centroid, where no ball reaches, takes the small face's corner
-    // of both cells. No seed is nearer there than the two the face is equidistant from.
+    // seed): a seed at the face's centroid, pushed out of the balls near it, takes the small
+    // face's corner of both cells, as long as it stays no farther from the face than they are.
     const double clearance = (g.centroid - s.position).norm();
-    if (place.clear_of_balls(g.centroid, kNoBall) && clearance > 0 &&
-        regions.region_of(g.centroid, g.normal) == region && !place.near_placed(g.centroid)) {
-      Seed seed{g.centroid, region, clearance, SeedKind::Interior};
+    const std::optional<Point> p = place.pushed_clear(g.centroid);
+    if (p && clearance > 0 && (*p - g.centroid).norm() < clearance && regions.region_of(*p, g.normal) == region &&
+        !place.near_placed(*p)) {
+      Seed seed{*p, region, clearance, SeedKind::Interior};
       place.remember(seed);
       added.push_back(seed);
     }
