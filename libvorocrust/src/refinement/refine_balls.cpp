@@ -2,6 +2,7 @@
 #include "refinement/refine_balls.hpp"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -200,6 +201,7 @@ class BallRefinement::Impl {
   int restart_phase_ = 0;  // where the next run() starts: the lowest type shrunk since the last run()
   double deep_ = kDeep;    // C4: coverage must be this deep (1 - alpha)
   int passes_[3] = {0, 0, 0};  // per stratum type: sampling passes so far, named in progress
+  std::uint32_t swept_ = 0;    // balls numbered below this have been through a sweep
   double min_radius_ = 0;
   std::unique_ptr<geometry::BoxTree> edge_tree_, face_tree_;
   std::vector<std::uint32_t> scratch_;
@@ -638,12 +640,24 @@ void BallRefinement::Impl::enforce_lipschitz(StratumType type) {
 // C1 and C2 over dense samples: a ball holding a sample it is not co-smooth with shrinks to
 // 0.49 of the distance to the nearest such sample; two overlapping balls neither of which is
 // co-smooth with the other's centre both shrink apart.
+// Only the balls added since the last sweep can break C1 or C2: an older ball was swept at its
+// radius then, and radii only shrink, which makes no ball reach a sample or another ball it did
+// not reach before. So a new ball is checked against every ball, and an older one only against the
+// new ones, each such pair shrinking both as a sweep of every ball would.
 bool BallRefinement::Impl::sweep() {
   const auto start = Clock::now();
   const std::size_t n = balls_.size();
+  const std::uint32_t first_new = swept_;
   std::vector<double> target(n);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const auto& range) {
+  for (std::uint32_t b = 0; b < n; ++b) target[b] = balls_[b].radius;
+  struct OldPair {
+    std::uint32_t ball;
+    double radius;
+  };
+  tbb::enumerable_thread_specific<std::vector<OldPair>> old_pairs;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(first_new, n, 64), [&](const auto& range) {
     std::vector<std::uint32_t> near;
+    std::vector<OldPair>& pairs = old_pairs.local();
     for (std::size_t b = range.begin(); b != range.end(); ++b) {
       const RefinedBall& ball = balls_[static_cast<std::uint32_t>(b)];
       double r = ball.radius;
@@ -655,12 +669,18 @@ bool BallRefinement::Impl::sweep() {
         for (std::uint32_t q : near) {
           const RefinedBall& other = balls_[q];
           if (q == b || cosmooth_(ball.site, other.site) || cosmooth_(other.site, ball.site)) continue;
-          r = std::min(r, kSeparation * (other.site.position - ball.site.position).norm());
+          const double apart = kSeparation * (other.site.position - ball.site.position).norm();
+          r = std::min(r, apart);
+          if (q < first_new) pairs.push_back({q, apart});
         }
       }
       target[b] = r;
     }
   });
+  for (const std::vector<OldPair>& pairs : old_pairs) {
+    for (const OldPair& p : pairs) target[p.ball] = std::min(target[p.ball], p.radius);
+  }
+  swept_ = static_cast<std::uint32_t>(n);
   const std::size_t before = stats_.c1_shrinks;
   for (std::uint32_t b = 0; b < n; ++b) shrink(b, target[b], Reason::C1);
   stats_.sweep_seconds += seconds_since(start);
