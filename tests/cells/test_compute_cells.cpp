@@ -173,6 +173,65 @@ TEST(ComputeVoronoiCells, EveryVertexIsTheCentreOfAnEmptySphereThroughFourSeeds)
   }
 }
 
+// The fallbacks' check: a cell cut as if a neighbour were not there holds part of that
+// neighbour's cell, and cells_holding_others names it, and only it.
+TEST(ComputeVoronoiCells, CellsHoldingOthersNamesACellThatMissedANeighbour) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(-3.0, 3.0);
+  std::vector<Point> positions(1500);
+  for (Point& p : positions) p = Point(unit(rng), unit(rng), unit(rng));
+  positions[0] = Point(0, 0, 0);
+  std::vector<Index> cell_seeds;
+  for (Index s = 0; s < positions.size(); ++s) {
+    if (positions[s].norm() < 1.5) cell_seeds.push_back(s);
+  }
+  std::vector<std::size_t> all(cell_seeds.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  std::vector<cells::RawCell> raw = cells::compute_voronoi_cells(positions, cell_seeds);
+  EXPECT_TRUE(cells::cells_holding_others(positions, cell_seeds, raw, all).empty());
+
+  // Cell 0 cut again with its first neighbour moved far away.
+  ASSERT_EQ(cell_seeds.front(), 0u);
+  const auto missed = static_cast<std::size_t>(raw[0].neighbours.front());
+  std::vector<Point> without = positions;
+  without[missed] = Point(100, 100, 100);
+  const std::vector<cells::RawCell> wrong = cells::compute_voronoi_cells(without, {0});
+  raw[0] = wrong[0];
+  EXPECT_EQ(cells::cells_holding_others(positions, cell_seeds, raw, all), std::vector<std::size_t>{0});
+}
+
+// Seeds crowded a thousand times closer than the frame's spacing (a thin part of a model), cut
+// by the assembly's fallbacks: every vertex is still the centre of an empty sphere.
+TEST(ComputeVoronoiCells, FallbackCellsOfCrowdedSeedsHaveEmptySpheres) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> wide(-4.0, 4.0), jitter(-0.3e-3, 0.3e-3);
+  std::vector<Point> positions;
+  for (int i = 0; i < 1000; ++i) positions.emplace_back(wide(rng), wide(rng), wide(rng));
+  std::vector<Index> cell_seeds;
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j) {
+      for (int k = 0; k < 6; ++k) {
+        if (i > 0 && i < 5 && j > 0 && j < 5 && k > 0 && k < 5) cell_seeds.push_back(static_cast<Index>(positions.size()));
+        positions.push_back(Point(i * 1e-3 + jitter(rng), j * 1e-3 + jitter(rng), k * 1e-3 + jitter(rng)));
+      }
+    }
+  }
+  std::vector<cells::RawCell> raw(cell_seeds.size());
+  std::vector<std::size_t> all(cell_seeds.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  for (int variant = 1; variant <= 4; ++variant) {
+    cells::recompute_voronoi_cells(positions, cell_seeds, all, variant, raw);
+    for (std::size_t c = 0; c < raw.size(); ++c) {
+      const Point& own = positions[cell_seeds[c]];
+      for (const Point& v : raw[c].vertices) {
+        const double r = (v - own).norm();
+        for (const Point& q : positions) ASSERT_GE((v - q).norm(), r * (1 - 1e-9)) << "variant " << variant << ", cell " << c;
+      }
+    }
+    EXPECT_TRUE(cells::cells_holding_others(positions, cell_seeds, raw, all).empty());
+  }
+}
+
 TEST(ComputeVoronoiCells, ACellNoSeedBoundsIsAnError) {
   const std::vector<Point> positions = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
   try {

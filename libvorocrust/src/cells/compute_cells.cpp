@@ -308,6 +308,8 @@ VoronoiMesh GrowingCells::mesh() const {
         for (std::size_t k = 0; k < which.size(); ++k) subset[k] = cell_seeds[which[k]];
         std::vector<RawCell> redone = compute_voronoi_cells_in_containers(frame.normalized, subset);
         for (std::size_t k = 0; k < which.size(); ++k) raw[which[k]] = std::move(redone[k]);
+        recompute_voronoi_cells(frame.normalized, cell_seeds,
+                                cells_holding_others(frame.normalized, cell_seeds, raw, which), 1, raw);
       } else {
         recompute_voronoi_cells(frame.normalized, cell_seeds, which, attempt, raw);
       }

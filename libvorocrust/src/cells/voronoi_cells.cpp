@@ -77,9 +77,10 @@ void canonicalize(RawCell& cell, Scratch& scratch) {
   cell.cycles.swap(cycles);
 }
 
-// A Voro++ cell of the seed at p as a RawCell.
-void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cell, Scratch& scratch) {
-  voro_cell.vertices(p.x(), p.y(), p.z(), scratch.xyz);
+// A Voro++ cell of the seed at p, computed `scale` times as small, as a RawCell.
+void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cell, Scratch& scratch, double scale = 1) {
+  voro_cell.vertices(0, 0, 0, scratch.xyz);
+  for (std::size_t k = 0; k < scratch.xyz.size(); ++k) scratch.xyz[k] = p[static_cast<Eigen::Index>(k % 3)] + scale * scratch.xyz[k];
   voro_cell.face_vertices(scratch.faces);
   voro_cell.neighbors(scratch.ids);
   const std::vector<double>& xyz = scratch.xyz;
@@ -107,6 +108,8 @@ constexpr double kSeedsPerBlock = 5.6;
 constexpr double kFirstMargin = 3.0;
 // Seeds the first k-d tree query gives a cell cut alone: most cells need fewer.
 constexpr std::size_t kNearestFirst = 32;
+// Half the side of the first cube of a cell cut at the scale of its nearest seed, in that unit.
+constexpr double kLocalCube = 64;
 
 // The seeds sorted along the axis that the slabs cut, and the bounds of the container.
 struct Layout {
@@ -260,6 +263,128 @@ std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, 
   return cells;
 }
 
+namespace {
+
+// Cuts and extracts one cell: a cube about its seed, cut by the other
+// seeds in the order of (distance, seed), each cut unless it lies beyond twice the cell's
+// farthest vertex, where it cannot cut, nor can any after it: the nearest from a k-d tree query,
+// then those in shells of doubling radius. So the cuts that are made do not depend on the tree,
+// nor on seeds beyond the reach, whatever else the positions hold.
+class CellCutter {
+ public:
+  CellCutter(const std::vector<Point>& positions, const StaticKdTree<Cloud>& tree) : positions_(positions), tree_(tree) {}
+
+  // `reach`: half the side of the cube bigger than all seeds; `variant` scales it (and the local
+  // cube) by 1.375^variant. `at_local_scale`: see below.
+  void cut(Index seed, double reach, int variant, bool at_local_scale, RawCell& out) {
+    const Point& p = positions_[seed];
+    const std::size_t wanted = std::min<std::size_t>(kNearestFirst, positions_.size());
+    scratch_.near.resize(wanted);
+    scratch_.distance2.resize(wanted);
+    const std::size_t found = tree_.knnSearch(p.data(), wanted, scratch_.near.data(), scratch_.distance2.data());
+    const double growth = std::pow(1.375, variant);
+    // Voro++ decides what lies on a plane with an absolute tolerance, which the frame sets to
+    // about 1e-11 of the seed spacing. Where seeds crowd far closer than the mean (a thin part of
+    // a model), a plane that cuts a thin wedge from a tiny cell can pass for one through its
+    // vertices. At local scale, a cell is cut in units of its nearest seed's distance instead (a
+    // power of two, so exact) from a cube of kLocalCube such units; a cell that keeps a wall of it
+    // is cut as elsewhere (a cube of the frame's units so big would lose cuts to round-off). Only
+    // the assembly's fallbacks do so: neighbours cut at two scales round their shared vertices
+    // apart.
+    const double scale = at_local_scale ? local_scale(seed, found) : 1;
+    if (scale < 1) {
+      cut_from(seed, found, kLocalCube * growth, scale, out);
+      if (std::none_of(out.neighbours.begin(), out.neighbours.end(), [](std::int32_t n) { return n < 0; })) return;
+    }
+    cut_from(seed, found, reach * growth, 1, out);
+  }
+
+ private:
+  // The cell cut from the cube of half-side `half_side` in units of `scale`; the k-d tree's
+  // `found` nearest seeds are in scratch_.
+  void cut_from(Index seed, std::size_t found, double half_side, double scale, RawCell& out) {
+    const Point& p = positions_[seed];
+    const double scale2 = scale * scale;
+    cell_.init(-half_side, half_side, -half_side, half_side, -half_side, half_side);
+    double reach2 = 0;  // the farthest seed cut, squared
+    const auto cut_in_order = [&](std::vector<std::pair<double, std::uint32_t>>& candidates) {
+      std::sort(candidates.begin(), candidates.end());
+      for (const auto& [d2, other] : candidates) {
+        if (other == seed) continue;
+        if (d2 > cell_.max_radius_squared() * scale2) return false;
+        const Point d = (positions_[other] - p) / scale;
+        cell_.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(other));
+        reach2 = d2;
+      }
+      return true;
+    };
+    const bool all = found == positions_.size();
+    // Every seed nearer than `lower` (squared) has had its turn.
+    double lower = found > 0 ? scratch_.distance2[found - 1] : 0;
+    order_.clear();
+    for (std::size_t j = 0; j < found; ++j) {  // those at the farthest distance may have twins the query left out
+      if (all || scratch_.distance2[j] < lower) order_.emplace_back(scratch_.distance2[j], scratch_.near[j]);
+    }
+    bool more = cut_in_order(order_) && !all;
+    while (more && lower <= cell_.max_radius_squared() * scale2) {
+      const double bound2 =
+          std::nextafter(cell_.max_radius_squared() * scale2, std::numeric_limits<double>::infinity());
+      const double upper = std::min(bound2, std::max(4 * lower, 1e-300));
+      scratch_.within.clear();
+      tree_.radiusSearch(p.data(), upper, scratch_.within, nanoflann::SearchParams(32, 0, false));
+      order_.clear();
+      for (const auto& [other, d2] : scratch_.within) {
+        if (d2 >= lower) order_.emplace_back(d2, other);
+      }
+      more = cut_in_order(order_) && scratch_.within.size() < positions_.size();
+      lower = upper;
+    }
+    extract(cell_, p, out, scratch_, scale);
+    out.reach2 = std::max(reach2, cell_.max_radius_squared() * scale2);
+  }
+
+
+ public:
+  // The power of two nearest the distance to the nearest other seed, at most 1 (the frame's
+  // spacing): a seed added nearer than that is within the cell's reach, so the scale of a cell
+  // that cells_reached passes over stays as it was.
+  double local_scale(Index seed, std::size_t found) const {
+    for (std::size_t j = 0; j < found; ++j) {
+      if (scratch_.near[j] == seed || !(scratch_.distance2[j] > 0)) continue;
+      return std::min(1.0, std::exp2(std::round(std::log2(scratch_.distance2[j]) / 2)));
+    }
+    return 1;
+  }
+
+  // Whether every vertex of `cell` is as near its seed as any other seed is, up to round-off
+  // (1e-6 of its distance, far above what degenerate vertices differ by). Where many seeds are
+  // nearly cospherical, Voro++ 0.4.6 can lose a whole cut to round-off in an earlier one, and
+  // the cell keeps a wedge of its neighbour's.
+  bool holds_only_its_own(Index seed, const RawCell& cell) const {
+    const Point& p = positions_[seed];
+    for (const Point& x : cell.vertices) {
+      std::uint32_t nearest = 0;
+      double nearest2 = 0;
+      tree_.knnSearch(x.data(), 1, &nearest, &nearest2);
+      const double own2 = (x - p).squaredNorm();
+      if (nearest != seed && nearest2 < own2 * (1 - 2e-6)) return false;
+    }
+    return true;
+  }
+
+ private:
+  const std::vector<Point>& positions_;
+  const StaticKdTree<Cloud>& tree_;
+  voro::voronoicell_neighbor cell_;
+  Scratch scratch_;
+  std::vector<std::pair<double, std::uint32_t>> order_;
+};
+
+// Initial cube sizes a cell that failed holds_only_its_own is cut from, one after the other.
+constexpr int kVerifiedTries = 8;
+
+}  // namespace
+
 void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
                              const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells) {
   if (which.empty()) return;
@@ -269,59 +394,19 @@ void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vec
   for (const Point& p : positions) bounds.extend(p);
   // The initial cell: a cube about each seed bigger than all seeds, so that only a cell no seed
   // bounds keeps one of its walls.
-  const double reach = (bounds.diagonal().norm() + 1) * std::pow(1.375, variant);
+  const double base = bounds.diagonal().norm() + 1;
   std::vector<Index> unbounded(which.size(), std::numeric_limits<Index>::max());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 256), [&](const auto& range) {
-    voro::voronoicell_neighbor cell;
-    Scratch scratch;
-    std::vector<std::pair<double, std::uint32_t>> order;
+    CellCutter cutter(positions, tree);
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       const Index seed = cell_seeds[which[k]];
-      const Point& p = positions[seed];
-      cell.init(-reach, reach, -reach, reach, -reach, reach);
-      // The seeds in the order of (distance, seed), each cut unless it lies beyond twice the
-      // cell's farthest vertex, where it cannot cut, nor can any after it: the nearest from a
-      // k-d tree query, then those in shells of doubling radius. So the cuts that are made do
-      // not depend on the tree, nor on seeds beyond the reach, whatever else the positions hold.
-      double reach2 = 0;  // the farthest seed cut, squared
-      const auto cut_in_order = [&](std::vector<std::pair<double, std::uint32_t>>& candidates) {
-        std::sort(candidates.begin(), candidates.end());
-        for (const auto& [d2, other] : candidates) {
-          if (other == seed) continue;
-          if (d2 > cell.max_radius_squared()) return false;
-          const Point d = positions[other] - p;
-          cell.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(other));
-          reach2 = d2;
-        }
-        return true;
-      };
-      const std::size_t wanted = std::min<std::size_t>(kNearestFirst, positions.size());
-      scratch.near.resize(wanted);
-      scratch.distance2.resize(wanted);
-      const std::size_t found = tree.knnSearch(p.data(), wanted, scratch.near.data(), scratch.distance2.data());
-      const bool all = found == positions.size();
-      // Every seed nearer than `lower` (squared) has had its turn.
-      double lower = found > 0 ? scratch.distance2[found - 1] : 0;
-      order.clear();
-      for (std::size_t j = 0; j < found; ++j) {  // those at the farthest distance may have twins the query left out
-        if (all || scratch.distance2[j] < lower) order.emplace_back(scratch.distance2[j], scratch.near[j]);
-      }
-      bool more = cut_in_order(order) && !all;
-      while (more && lower <= cell.max_radius_squared()) {
-        const double bound2 = std::nextafter(cell.max_radius_squared(), std::numeric_limits<double>::infinity());
-        const double upper = std::min(bound2, std::max(4 * lower, 1e-300));
-        scratch.within.clear();
-        tree.radiusSearch(p.data(), upper, scratch.within, nanoflann::SearchParams(32, 0, false));
-        order.clear();
-        for (const auto& [other, d2] : scratch.within) {
-          if (d2 >= lower) order.emplace_back(d2, other);
-        }
-        more = cut_in_order(order) && scratch.within.size() < positions.size();
-        lower = upper;
-      }
       RawCell& out = cells[which[k]];
-      extract(cell, p, out, scratch);
-      out.reach2 = std::max(reach2, cell.max_radius_squared());
+      cutter.cut(seed, base, variant, false, out);
+      // Variants other than 0 are the assembly's fallbacks: a cell there is checked, and cut at
+      // local scale and from other cubes until it holds nothing of another seed's.
+      for (int t = 1; variant > 0 && t < kVerifiedTries && !cutter.holds_only_its_own(seed, out); ++t) {
+        cutter.cut(seed, base, variant + (t / 2) * 4, t % 2 == 1, out);
+      }
       for (const std::int32_t n : out.neighbours) {
         if (n < 0) unbounded[k] = seed;
       }
@@ -333,6 +418,24 @@ void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vec
                 "cell of seed " + std::to_string(worst) + " is not bounded by seeds: the seeds do not enclose the "
                 "materials (seeds of no material must surround them)");
   }
+}
+
+std::vector<std::size_t> cells_holding_others(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                                              const std::vector<RawCell>& cells, const std::vector<std::size_t>& which) {
+  const Cloud cloud{&positions};
+  StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  std::vector<char> bad(which.size(), 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 64), [&](const auto& range) {
+    const CellCutter cutter(positions, tree);
+    for (std::size_t k = range.begin(); k != range.end(); ++k) {
+      bad[k] = !cutter.holds_only_its_own(cell_seeds[which[k]], cells[which[k]]);
+    }
+  });
+  std::vector<std::size_t> out;
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    if (bad[k]) out.push_back(which[k]);
+  }
+  return out;
 }
 
 std::vector<std::size_t> cells_reached(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,

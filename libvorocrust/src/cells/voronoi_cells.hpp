@@ -53,9 +53,17 @@ std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point
 // Computes cells[k] again for each k in `which`, from an initial cube 1.375^variant times as
 // big. Variant 0 is what compute_voronoi_cells does. Where many seeds are nearly cospherical,
 // round-off in the cuts can leave two neighbours disagreeing on a tiny feature; cells cut from
-// another cube round otherwise, which is all the assembly needs to try again.
+// another cube round otherwise, which is all the assembly needs to try again. With a variant
+// above 0 (the assembly's fallbacks) each cell is also checked to hold no vertex nearer another
+// seed, and cut from further cubes until it does (a few at most): round-off can make Voro++ lose
+// a whole cut, and a fallback must not trade a tiny disagreement for a wedge of another cell.
 void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
                              const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells);
+
+// The cells among `which` (indices into `cells`, the cells of `cell_seeds`) with a vertex nearer
+// another seed than their own, beyond round-off: cells a lost cut left too big.
+std::vector<std::size_t> cells_holding_others(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                                              const std::vector<RawCell>& cells, const std::vector<std::size_t>& which);
 
 // The cells (indices into `cells`, the cells of `cell_seeds`, cut by compute_voronoi_cells)
 // within whose reach2 the seeds `added` lie. The other cells compute_voronoi_cells would cut
