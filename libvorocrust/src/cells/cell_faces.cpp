@@ -1,6 +1,9 @@
 #include "cells/cell_faces.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <atomic>
 #include <utility>
 
 namespace vorocrust::cells {
@@ -50,6 +53,41 @@ std::optional<CellFaces> welded_faces(const RawCell& cell, std::size_t first_ins
   }
   if (out.num_faces() < 4) return std::nullopt;
   return out;
+}
+
+std::size_t drop_edge_points(std::vector<CellFaces>& cells, std::size_t num_points) {
+  // Per point: 1 when some cell has it, 2 when some cell has it in other than two faces.
+  std::vector<std::atomic<std::uint8_t>> use(num_points);
+  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
+    std::vector<Index> points = cells[c].points;
+    std::sort(points.begin(), points.end());
+    for (std::size_t k = 0; k < points.size();) {
+      std::size_t run = k;
+      while (run < points.size() && points[run] == points[k]) ++run;
+      const std::uint8_t mark = run - k == 2 ? 1 : 2;
+      std::uint8_t seen = use[points[k]].load(std::memory_order_relaxed);
+      while (seen < mark && !use[points[k]].compare_exchange_weak(seen, mark, std::memory_order_relaxed)) {
+      }
+      k = run;
+    }
+  });
+  std::size_t dropped = 0;
+  for (const auto& u : use) dropped += u.load(std::memory_order_relaxed) == 1;
+  if (dropped == 0) return 0;
+  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
+    CellFaces& cell = cells[c];
+    std::size_t kept = 0;
+    for (std::size_t f = 0; f < cell.num_faces(); ++f) {
+      const std::uint32_t begin = cell.starts[f], end = cell.starts[f + 1];
+      cell.starts[f] = static_cast<std::uint32_t>(kept);
+      for (std::uint32_t k = begin; k < end; ++k) {
+        if (use[cell.points[k]].load(std::memory_order_relaxed) != 1) cell.points[kept++] = cell.points[k];
+      }
+    }
+    cell.starts[cell.num_faces()] = static_cast<std::uint32_t>(kept);
+    cell.points.resize(kept);
+  });
+  return dropped;
 }
 
 }  // namespace vorocrust::cells

@@ -24,4 +24,12 @@ struct CellFaces {
 
 std::optional<CellFaces> welded_faces(const RawCell& cell, std::size_t first_instance, const std::vector<Index>& point_of);
 
+// Drops, from every face of `cells`, the points that are in exactly two faces of every cell that
+// has them: a convex cell's vertex is in three faces at least, so such a point only splits an
+// edge. Round-off leaves them at degenerate edges, where four seeds lie on one circle (VoroCrust
+// puts its seeds where spheres meet, so the two pairs of one ball pair share a circle): a plane
+// that touches a cell along such an edge splits it, and the neighbour across the face, cut
+// otherwise, does not. Returns how many points were dropped (`num_points`: the welded points).
+std::size_t drop_edge_points(std::vector<CellFaces>& cells, std::size_t num_points);
+
 }  // namespace vorocrust::cells

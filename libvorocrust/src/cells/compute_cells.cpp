@@ -280,6 +280,7 @@ VoronoiMesh GrowingCells::mesh() const {
         if (f) assembly.faces[c] = std::move(*f);
         else failed[c] = 1;
       });
+      cells::drop_edge_points(assembly.faces, welded.points.size());
       const bool closed = std::count(failed.begin(), failed.end(), 1) == 0;
       mesh = VoronoiMesh{};
       mesh.points = std::move(welded.points);
