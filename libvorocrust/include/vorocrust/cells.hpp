@@ -6,10 +6,11 @@
 //   seeds nearly on one sphere, the rule at VoroCrust's surface seeds) are welded: points closer
 //   than 1e-9 of their empty-sphere radius (and never less than 1e-9 of the seeds' mean spacing)
 //   are one point, for every cell that has them; edges and faces this collapses are dropped on
-//   both sides alike, and so is a point that only splits an edge of every cell that has it
-//   (four seeds on one circle leave such points on one side of a face). Where two cells still
-//   disagree on their common face, they and their neighbours are cut again, each checked to hold
-//   nothing nearer another seed, and the tolerance rises for the whole set, by tens up to 1e-6;
+//   both sides alike. Where two cells disagree on their common face, the points that only split
+//   an edge of every cell that has them are dropped (four seeds on one circle leave such points
+//   on one side of a face); where they still disagree, they and their neighbours are cut again,
+//   each checked to hold nothing nearer another seed, and the tolerance rises for the whole set,
+//   by tens up to 1e-6;
 // - every face is listed once. Its polygon's normal (right-hand rule) points from its owner cell
 //   to the other side; between two material cells the owner is the lower cell index;
 // - every cell is closed (each edge of the cell used by exactly two of its faces, once in each

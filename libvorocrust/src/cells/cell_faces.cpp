@@ -1,5 +1,6 @@
 #include "cells/cell_faces.hpp"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -58,17 +59,20 @@ std::optional<CellFaces> welded_faces(const RawCell& cell, std::size_t first_ins
 std::size_t drop_edge_points(std::vector<CellFaces>& cells, std::size_t num_points) {
   // Per point: 1 when some cell has it, 2 when some cell has it in other than two faces.
   std::vector<std::atomic<std::uint8_t>> use(num_points);
-  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
-    std::vector<Index> points = cells[c].points;
-    std::sort(points.begin(), points.end());
-    for (std::size_t k = 0; k < points.size();) {
-      std::size_t run = k;
-      while (run < points.size() && points[run] == points[k]) ++run;
-      const std::uint8_t mark = run - k == 2 ? 1 : 2;
-      std::uint8_t seen = use[points[k]].load(std::memory_order_relaxed);
-      while (seen < mark && !use[points[k]].compare_exchange_weak(seen, mark, std::memory_order_relaxed)) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells.size(), 1024), [&](const auto& range) {
+    std::vector<Index> points;
+    for (std::size_t c = range.begin(); c != range.end(); ++c) {
+      points.assign(cells[c].points.begin(), cells[c].points.end());
+      std::sort(points.begin(), points.end());
+      for (std::size_t k = 0; k < points.size();) {
+        std::size_t run = k;
+        while (run < points.size() && points[run] == points[k]) ++run;
+        const std::uint8_t mark = run - k == 2 ? 1 : 2;
+        std::uint8_t seen = use[points[k]].load(std::memory_order_relaxed);
+        while (seen < mark && !use[points[k]].compare_exchange_weak(seen, mark, std::memory_order_relaxed)) {
+        }
+        k = run;
       }
-      k = run;
     }
   });
   std::size_t dropped = 0;

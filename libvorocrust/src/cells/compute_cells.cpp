@@ -280,11 +280,19 @@ VoronoiMesh GrowingCells::mesh() const {
         if (f) assembly.faces[c] = std::move(*f);
         else failed[c] = 1;
       });
-      cells::drop_edge_points(assembly.faces, welded.points.size());
       const bool closed = std::count(failed.begin(), failed.end(), 1) == 0;
       mesh = VoronoiMesh{};
       mesh.points = std::move(welded.points);
-      if (closed) assembly.build(mesh, failed);
+      if (closed) {
+        assembly.build(mesh, failed);
+        // Cells that disagree only by points splitting an edge on one side agree without them.
+        if (std::count(failed.begin(), failed.end(), 1) > 0 && cells::drop_edge_points(assembly.faces, mesh.points.size()) > 0) {
+          std::fill(failed.begin(), failed.end(), 0);
+          mesh.faces.clear();
+          mesh.cells.clear();
+          assembly.build(mesh, failed);
+        }
+      }
       if (std::count(failed.begin(), failed.end(), 1) == 0) break;
       if (attempt == kAttempts - 1) {
         fail_on_lowest(failed, cell_seeds, closed ? "and a neighbour see their common face differently after welding"

@@ -304,7 +304,7 @@ class CellCutter {
   // `found` nearest seeds are in scratch_.
   void cut_from(Index seed, std::size_t found, double half_side, double scale, RawCell& out) {
     const Point& p = positions_[seed];
-    const double scale2 = scale * scale;
+    const double scale2 = scale * scale, inverse = 1 / scale;  // powers of two: exact
     cell_.init(-half_side, half_side, -half_side, half_side, -half_side, half_side);
     double reach2 = 0;  // the farthest seed cut, squared
     const auto cut_in_order = [&](std::vector<std::pair<double, std::uint32_t>>& candidates) {
@@ -312,7 +312,7 @@ class CellCutter {
       for (const auto& [d2, other] : candidates) {
         if (other == seed) continue;
         if (d2 > cell_.max_radius_squared() * scale2) return false;
-        const Point d = (positions_[other] - p) / scale;
+        const Point d = (positions_[other] - p) * inverse;
         cell_.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(other));
         reach2 = d2;
       }
