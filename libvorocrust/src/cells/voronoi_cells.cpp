@@ -343,8 +343,6 @@ class CellCutter {
     out.reach2 = std::max(reach2, cell_.max_radius_squared() * scale2);
   }
 
-
- public:
   // The power of two nearest the distance to the nearest other seed, at most 1 (the frame's
   // spacing): a seed added nearer than that is within the cell's reach, so the scale of a cell
   // that cells_reached passes over stays as it was.
@@ -356,29 +354,29 @@ class CellCutter {
     return 1;
   }
 
-  // Whether every vertex of `cell` is as near its seed as any other seed is, up to round-off
-  // (1e-6 of its distance, far above what degenerate vertices differ by). Where many seeds are
-  // nearly cospherical, Voro++ 0.4.6 can lose a whole cut to round-off in an earlier one, and
-  // the cell keeps a wedge of its neighbour's.
-  bool holds_only_its_own(Index seed, const RawCell& cell) const {
-    const Point& p = positions_[seed];
-    for (const Point& x : cell.vertices) {
-      std::uint32_t nearest = 0;
-      double nearest2 = 0;
-      tree_.knnSearch(x.data(), 1, &nearest, &nearest2);
-      const double own2 = (x - p).squaredNorm();
-      if (nearest != seed && nearest2 < own2 * (1 - 2e-6)) return false;
-    }
-    return true;
-  }
-
- private:
   const std::vector<Point>& positions_;
   const StaticKdTree<Cloud>& tree_;
   voro::voronoicell_neighbor cell_;
   Scratch scratch_;
   std::vector<std::pair<double, std::uint32_t>> order_;
 };
+
+// Whether every vertex of `cell` is as near its seed as any other seed is, up to round-off
+// (1e-6 of its distance, far above what degenerate vertices differ by). Where many seeds are
+// nearly cospherical, Voro++ 0.4.6 can lose a whole cut to round-off in an earlier one, and
+// the cell keeps a wedge of its neighbour's.
+bool holds_only_its_own(const std::vector<Point>& positions, const StaticKdTree<Cloud>& tree, Index seed,
+                        const RawCell& cell) {
+  const Point& p = positions[seed];
+  for (const Point& x : cell.vertices) {
+    std::uint32_t nearest = 0;
+    double nearest2 = 0;
+    tree.knnSearch(x.data(), 1, &nearest, &nearest2);
+    const double own2 = (x - p).squaredNorm();
+    if (nearest != seed && nearest2 < own2 * (1 - 2e-6)) return false;
+  }
+  return true;
+}
 
 // Initial cube sizes a cell that failed holds_only_its_own is cut from, one after the other.
 constexpr int kVerifiedTries = 8;
@@ -404,7 +402,7 @@ void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vec
       cutter.cut(seed, base, variant, false, out);
       // Variants other than 0 are the assembly's fallbacks: a cell there is checked, and cut at
       // local scale and from other cubes until it holds nothing of another seed's.
-      for (int t = 1; variant > 0 && t < kVerifiedTries && !cutter.holds_only_its_own(seed, out); ++t) {
+      for (int t = 1; variant > 0 && t < kVerifiedTries && !holds_only_its_own(positions, tree, seed, out); ++t) {
         cutter.cut(seed, base, variant + (t / 2) * 4, t % 2 == 1, out);
       }
       for (const std::int32_t n : out.neighbours) {
@@ -426,9 +424,8 @@ std::vector<std::size_t> cells_holding_others(const std::vector<Point>& position
   StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   std::vector<char> bad(which.size(), 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 64), [&](const auto& range) {
-    const CellCutter cutter(positions, tree);
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
-      bad[k] = !cutter.holds_only_its_own(cell_seeds[which[k]], cells[which[k]]);
+      bad[k] = !holds_only_its_own(positions, tree, cell_seeds[which[k]], cells[which[k]]);
     }
   });
   std::vector<std::size_t> out;
