@@ -43,7 +43,7 @@ def main():
         verdict = "Mesh OK" if "\nMesh OK." in check else ", ".join(re.findall(r"\*\*\*([^,\n]*)", check))
         print("| %s | %d / %d / %d | %d (%d) | %d | %.2f s | %.2f s | %.2f s | %.2f s | %d | %s |" % (
             name, i["interior_seeds"], i["outside_seeds"], i["cap_seeds"], i["repair_seeds"], i["repair_rounds"],
-            c["cells"], seconds.get("interior seeds", 0) + seconds.get("cap seeds", 0), seconds.get("cells", 0),
+            c["cells"], seconds.get("interior seeds", 0) + seconds.get("cap seeds", 0), seconds.get("cells", 0) + seconds.get("assembly", 0),
             seconds.get("skew repair", 0), report["total_seconds"], skew, verdict))
 
 

@@ -3,11 +3,16 @@
 // its seeds.csv.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <map>
+#include <utility>
+
 #include "cells/growing_cells.hpp"
 #include "cells/mesh_checks.hpp"
 #include "cells/seed_sets.hpp"
 #include "test_support.hpp"
 #include "vorocrust/error.hpp"
+#include "vorocrust/face_skewness.hpp"
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/read_mesh.hpp"
 
@@ -77,6 +82,41 @@ TEST(GrowingCells, AFrameThatChangesCutsEveryCellAgain) {
   seeds.push_back(far);
   growing.add_seeds(seeds);
   expect_same_mesh(growing.mesh(), compute_cells(seeds));
+}
+
+// The skew repair finds its faces on the cells as cut: every face of the mesh, once, with its
+// measures to round-off, and no face that welding drops.
+TEST(GrowingCells, CutFacesAreTheMeshFacesWithTheirSkewness) {
+  MeshOptions options;
+  options.seed = 3;
+  const MeshResult r = generate_mesh(read_mesh(test::model("cgal_joint.off")), options);
+  cells::GrowingCells growing(r.seeds, {});
+  const VoronoiMesh mesh = growing.mesh();
+  const std::vector<cells::CutFace> cut = growing.skew_faces(-1);
+  std::map<std::pair<Index, std::int32_t>, const cells::CutFace*> by_seeds;
+  for (const cells::CutFace& f : cut) by_seeds[{f.owner_seed, f.neighbour_seed}] = &f;
+  ASSERT_EQ(by_seeds.size(), cut.size());  // each face once
+  std::size_t skew_in_mesh = 0, skew_cut = 0;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const VoronoiFace& face = mesh.faces[f];
+    const auto it = by_seeds.find({face.owner_seed, static_cast<std::int32_t>(face.neighbour_seed)});
+    ASSERT_NE(it, by_seeds.end()) << "face " << f;
+    const cells::CutFace& c = *it->second;
+    EXPECT_EQ(c.between_cells, face.neighbour != kNoCell);
+    const FaceGeometry g = face_geometry(mesh, f);
+    EXPECT_NEAR(c.geometry.area, g.area, 1e-6 * g.area + 1e-15);
+    EXPECT_LT((c.geometry.centroid - g.centroid).norm(), 1e-6 * std::sqrt(g.area) + 1e-12);
+    const double skewness = face_skewness(mesh, f);
+    EXPECT_NEAR(c.skewness, skewness, 1e-6 * skewness) << "face " << f;
+    skew_in_mesh += skewness > 0.5;
+    skew_cut += c.skewness > 0.5;
+    by_seeds.erase(it);
+  }
+  // The faces welding drops (fewer than three points apart) are left out as well.
+  EXPECT_TRUE(by_seeds.empty()) << by_seeds.size() << " cut faces are not in the mesh";
+  EXPECT_GT(skew_in_mesh, 0u);  // the test sees skew faces
+  EXPECT_EQ(skew_cut, skew_in_mesh);
+  EXPECT_EQ(growing.skew_faces(0.5).size(), skew_cut);
 }
 
 TEST(GrowingCells, SeedsCanOnlyBeAdded) {

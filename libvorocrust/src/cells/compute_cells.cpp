@@ -2,6 +2,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -11,6 +12,7 @@
 
 #include "cells/cell_faces.hpp"
 #include "cells/growing_cells.hpp"
+#include "cells/polygon_measures.hpp"
 #include "cells/voronoi_cells.hpp"
 #include "cells/weld_vertices.hpp"
 #include "vorocrust/cells.hpp"
@@ -183,17 +185,9 @@ void measure_cells(VoronoiMesh& mesh) {
     Point moment = Point::Zero();
     for (Index id : cell.faces) {
       const VoronoiFace& face = mesh.faces[id];
-      const bool outward = face.owner == static_cast<std::int32_t>(c);
-      Point centre = Point::Zero();
-      for (Index p : face.points) centre += mesh.points[p];
-      centre /= static_cast<double>(face.points.size());
-      for (std::size_t k = 0; k < face.points.size(); ++k) {
-        Point a = mesh.points[face.points[k]], b = mesh.points[face.points[(k + 1) % face.points.size()]];
-        if (!outward) std::swap(a, b);
-        const double v = (a - centre).cross(b - centre).dot(centre - apex) / 6;
-        volume += v;
-        moment += v * (apex + centre + a + b) / 4;
-      }
+      cells::add_cone(
+          apex, face.points.size(), [&](std::size_t k) -> const Point& { return mesh.points[face.points[k]]; },
+          face.owner == static_cast<std::int32_t>(c), volume, moment);
     }
     cell.volume = volume;
     cell.centroid = moment / volume;
@@ -256,6 +250,66 @@ void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
     raw_.resize(cell_seeds_.size());
     recompute_voronoi_cells(frame_.normalized, cell_seeds_, which, 0, raw_);
   });
+}
+
+namespace {
+
+// Whether three points of face f of a cell stand apart by more than welding unites (within ten
+// times its first tolerance): the faces that welding leaves with two points or one, it drops.
+bool spans_an_area(const RawCell& cell, std::size_t f, const Point& seed) {
+  constexpr double kApart = 1e-8;
+  std::array<const Point*, 3> apart{};
+  std::size_t found = 0;
+  for (std::uint32_t k = cell.starts[f]; k < cell.starts[f + 1] && found < 3; ++k) {
+    const Point& p = cell.vertices[cell.cycles[k]];
+    const double tolerance = weld_tolerance(p, seed, kApart);
+    if (std::all_of(apart.begin(), apart.begin() + found, [&](const Point* q) { return (p - *q).norm() > tolerance; })) {
+      apart[found++] = &p;
+    }
+  }
+  return found == 3;
+}
+
+}  // namespace
+
+std::vector<CutFace> GrowingCells::skew_faces(double threshold) const {
+  const auto point_at = [](const RawCell& cell, std::size_t f) {
+    return [&cell, f](std::size_t k) -> const Point& { return cell.vertices[cell.cycles[cell.starts[f] + k]]; };
+  };
+  const auto size = [](const RawCell& cell, std::size_t f) { return std::size_t{cell.starts[f + 1] - cell.starts[f]}; };
+  std::vector<Point> centroid(raw_.size());
+  std::vector<std::vector<CutFace>> found(raw_.size());
+  in_arena([&] {
+    tbb::parallel_for(std::size_t{0}, raw_.size(), [&](std::size_t c) {
+      const RawCell& cell = raw_[c];
+      double volume = 0;
+      Point moment = Point::Zero();
+      for (std::size_t f = 0; f < cell.num_faces(); ++f) {
+        add_cone(cell.vertices.front(), size(cell, f), point_at(cell, f), true, volume, moment);
+      }
+      centroid[c] = moment / volume;
+    });
+    tbb::parallel_for(std::size_t{0}, raw_.size(), [&](std::size_t c) {
+      const RawCell& cell = raw_[c];
+      for (std::size_t f = 0; f < cell.num_faces(); ++f) {
+        const std::int32_t across = cell.neighbours[f];
+        const std::int32_t d = across >= 0 ? cell_of_seed_[static_cast<std::size_t>(across)] : kNoCell;
+        if (d != kNoCell && d < static_cast<std::int32_t>(c)) continue;  // the lower cell has it
+        if (!(spans_an_area(cell, f, frame_.normalized[cell_seeds_[c]]))) continue;  // welded away
+        CutFace face{cell_seeds_[c], across, d != kNoCell, polygon_geometry(size(cell, f), point_at(cell, f)), 0};
+        const std::optional<Point> neighbour =
+            d != kNoCell ? std::optional<Point>(centroid[static_cast<std::size_t>(d)]) : std::nullopt;
+        face.skewness = polygon_skewness(size(cell, f), point_at(cell, f), face.geometry, centroid[c], neighbour);
+        if (!(face.skewness > threshold)) continue;
+        face.geometry.centroid = frame_.centre + frame_.scale * face.geometry.centroid;  // out of the frame
+        face.geometry.area *= frame_.scale * frame_.scale;
+        found[c].push_back(face);
+      }
+    });
+  });
+  std::vector<CutFace> out;
+  for (const std::vector<CutFace>& list : found) out.insert(out.end(), list.begin(), list.end());
+  return out;
 }
 
 VoronoiMesh GrowingCells::mesh() const {
@@ -342,24 +396,7 @@ std::size_t count_interior_faces(const VoronoiMesh& mesh) {
 
 FaceGeometry face_geometry(const VoronoiMesh& mesh, std::size_t face) {
   const std::vector<Index>& polygon = mesh.faces[face].points;
-  Point centre = Point::Zero();
-  for (Index p : polygon) centre += mesh.points[p];
-  centre /= static_cast<double>(polygon.size());
-  Point area = Point::Zero(), moment = Point::Zero();
-  double fan = 0;
-  for (std::size_t k = 0; k < polygon.size(); ++k) {
-    const Point& a = mesh.points[polygon[k]];
-    const Point& b = mesh.points[polygon[(k + 1) % polygon.size()]];
-    const Point twice = (a - centre).cross(b - centre);
-    area += twice / 2;
-    fan += twice.norm() / 2;
-    moment += twice.norm() / 2 * (a + b + centre) / 3;
-  }
-  FaceGeometry g;
-  g.area = area.norm();
-  g.normal = g.area > 0 ? Point(area / g.area) : Point::Zero();
-  g.centroid = fan > 0 ? Point(moment / fan) : centre;
-  return g;
+  return cells::polygon_geometry(polygon.size(), [&](std::size_t k) -> const Point& { return mesh.points[polygon[k]]; });
 }
 
 std::string region_name(const VoronoiMesh& mesh, std::int32_t label) {

@@ -5,8 +5,10 @@
 // checks the seeds as compute_cells does. add_seeds(seeds), given the seeds it has followed by
 // new ones, cuts the new seeds' cells and, of the others, only those whose reach (RawCell::reach2:
 // the farthest seed their cut met) a new seed enters: no other cut would change, even by
-// round-off. mesh() welds and assembles the cells as they stand. The skew repair adds a few dozen seeds to tens of thousands, so it pays for the new
-// seeds' neighbourhoods, not for all the cells again.
+// round-off. mesh() welds and assembles the cells as they stand. The skew repair adds a few dozen
+// seeds to tens of thousands, so it pays for the new seeds' neighbourhoods, not for all the cells
+// again; and it finds its skew faces on the cells as cut (skew_faces()), since welding and
+// assembling every cell, which only a mesh needs, costs several times what cutting a few does.
 //
 // mesh() is compute_cells(seeds, options) for the seeds as they stand, bit for bit: cells are
 // cut in a frame that a few seeds more do not change (a power-of-two scale about the box of the
@@ -14,6 +16,7 @@
 // depend on the seeds' k-d tree (voronoi_cells.hpp).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "cells/voronoi_cells.hpp"
@@ -22,11 +25,23 @@
 
 namespace vorocrust::cells {
 
+// A face of the cells as cut, before welding: the faces of mesh() but for points welded within
+// round-off, which move its measures by as little.
+struct CutFace {
+  Index owner_seed = 0;               // the lower cell's seed
+  std::int32_t neighbour_seed = -1;   // the seed across, or a Voro++ wall (< 0)
+  bool between_cells = false;         // whether the seed across has a cell
+  FaceGeometry geometry;              // normal from the owner's side
+  double skewness = 0;                // as face_skewness measures it, with the cells' centroids as cut
+};
+
 class GrowingCells {
  public:
   GrowingCells(const std::vector<Seed>& seeds, const CellsOptions& options);
   void add_seeds(const std::vector<Seed>& seeds);
   VoronoiMesh mesh() const;
+  // The faces whose skewness exceeds `threshold`, each once, in the order of their lower cell.
+  std::vector<CutFace> skew_faces(double threshold) const;
 
  private:
   void add_cell(std::size_t seed);

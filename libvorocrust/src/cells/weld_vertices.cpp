@@ -11,11 +11,12 @@
 #include "core/union_find.hpp"
 
 namespace vorocrust::cells {
-namespace {
 
-double tolerance(const Point& vertex, const Point& seed, double relative) {
+double weld_tolerance(const Point& vertex, const Point& seed, double relative) {
   return relative * std::max((vertex - seed).norm(), 1.0);
 }
+
+namespace {
 
 // Unites each vertex of cell c's face toward cell d with its nearest counterpart on d's face
 // toward c, when they are within tolerance.
@@ -49,7 +50,7 @@ void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Ind
       bool paired = true;
       for (std::size_t k = 0; k < size && paired; ++k) {
         const Point& u = cell.vertices[mine[k]];
-        paired = (other.vertices[theirs[(at + size - k) % size]] - u).norm() <= tolerance(u, seed, relative);
+        paired = (other.vertices[theirs[(at + size - k) % size]] - u).norm() <= weld_tolerance(u, seed, relative);
       }
       if (paired) {
         for (std::size_t k = 0; k < size; ++k) unite(mine[k], theirs[(at + size - k) % size]);
@@ -59,7 +60,7 @@ void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Ind
     // Otherwise (a degenerate vertex resolved differently on each side) each to its nearest.
     for (std::size_t k = 0; k < size; ++k) {
       const Point& u = cell.vertices[mine[k]];
-      double best = tolerance(u, seed, relative);
+      double best = weld_tolerance(u, seed, relative);
       std::uint32_t match = UINT32_MAX;
       for (std::size_t m = 0; m < other_size; ++m) {
         const double dist = (other.vertices[theirs[m]] - u).norm();
@@ -166,7 +167,7 @@ WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vecto
     const Point& seed = frame.normalized[cell_seeds[c]];
     for (std::size_t v = 0; v < cells[c].vertices.size(); ++v) {
       position[w.first_instance[c] + v] = cells[c].vertices[v];
-      tol[w.first_instance[c] + v] = tolerance(cells[c].vertices[v], seed, relative_tolerance);
+      tol[w.first_instance[c] + v] = weld_tolerance(cells[c].vertices[v], seed, relative_tolerance);
     }
   });
 

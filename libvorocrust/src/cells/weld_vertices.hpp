@@ -39,6 +39,10 @@ struct WeldedVertices {
   std::vector<Point> points;                // original coordinates
 };
 
+// Vertices of a cell (in the frame) this near each other become one point: `relative` times the
+// radius of the vertex's empty sphere, or of a unit one when that is smaller.
+double weld_tolerance(const Point& vertex, const Point& seed, double relative);
+
 WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
                              const std::vector<std::int32_t>& cell_of_seed, const Frame& frame,
                              double relative_tolerance);

@@ -8,7 +8,6 @@
 #include "geometry/ball_tree.hpp"
 #include "refinement/ball_index.hpp"
 #include "seeds/locate_regions.hpp"
-#include "vorocrust/face_skewness.hpp"
 
 namespace vorocrust {
 
@@ -150,19 +149,19 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
   return poles;
 }
 
-std::vector<Seed> skew_repair_seeds(const VoronoiMesh& cells, const std::vector<Seed>& seeds, const BallIndex& balls,
-                                    const RegionLocator& regions, const std::vector<Seed>& placed) {
+std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, const std::vector<Seed>& seeds,
+                                    const BallIndex& balls, const RegionLocator& regions,
+                                    const std::vector<Seed>& placed) {
   SphereSeeds place(balls, regions);
   for (const Seed& s : placed) place.remember(s);
   std::vector<Seed> added;
   std::vector<std::uint32_t> a, b;
-  for (std::size_t f : skew_faces(cells)) {
-    const VoronoiFace& face = cells.faces[f];
-    if (face.neighbour == kNoCell) continue;
-    const std::int32_t region = cells.cells[face.owner].region;
-    if (cells.cells[face.neighbour].region != region) continue;
-    const FaceGeometry g = face_geometry(cells, f);
-    const Seed &s = seeds[face.owner_seed], &t = seeds[face.neighbour_seed];
+  for (const cells::CutFace& face : skew) {
+    if (!face.between_cells) continue;
+    const Seed &s = seeds[face.owner_seed], &t = seeds[static_cast<std::size_t>(face.neighbour_seed)];
+    const std::int32_t region = s.region;
+    if (t.region != region) continue;
+    const FaceGeometry& g = face.geometry;
     spheres_through(balls, s.position, s.radius, a);
     spheres_through(balls, t.position, t.radius, b);
     // The spheres either seed lies on, those of both first (their centres lie on the face's

@@ -23,6 +23,7 @@
 
 #include <vector>
 
+#include "cells/growing_cells.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/seeds.hpp"
 
@@ -34,8 +35,10 @@ class RegionLocator;
 std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallIndex& balls,
                              const RegionLocator& regions);
 
-// `seeds` are the seeds `cells` were computed from; `placed` the cap seeds among them.
-std::vector<Seed> skew_repair_seeds(const VoronoiMesh& cells, const std::vector<Seed>& seeds, const BallIndex& balls,
-                                    const RegionLocator& regions, const std::vector<Seed>& placed);
+// `skew` are the highly skew faces of the cells of `seeds` (cells::GrowingCells::skew_faces);
+// `placed` the cap seeds among the seeds.
+std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, const std::vector<Seed>& seeds,
+                                    const BallIndex& balls, const RegionLocator& regions,
+                                    const std::vector<Seed>& placed);
 
 }  // namespace vorocrust

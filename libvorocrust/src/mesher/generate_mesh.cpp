@@ -190,34 +190,36 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   CellsOptions cells_options;
   cells_options.threads = options.threads;
   std::optional<cells::GrowingCells> cells;
-  result.cells = clock("cells", [&] {
+  std::vector<cells::CutFace> skew = clock("cells", [&] {
     cells.emplace(result.seeds, cells_options);
-    return cells->mesh();
+    return cells->skew_faces(kHighSkewness);
   });
   // Faces still highly skew about a ball's centre get a seed on its sphere, and the cells about
   // the new seeds are cut again (interior/cap_seeds.hpp). A repair seed in a thin wedge between
   // crossing surfaces can make a skew face beside the one it removes, so rounds go on while the
   // count falls: two rounds without a fall, or a round with no seed to place, end it.
   constexpr int kRepairRounds = 24;
-  std::size_t fewest_skew = skew_faces(result.cells).size();
+  std::size_t fewest_skew = skew.size();
   for (int round = 0, stalled = 0; round < kRepairRounds && stalled < 2 && fewest_skew > 0; ++round) {
     if (progress && !progress({"skew repair", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
     const std::vector<Seed> repairs = clock("skew repair", [&] {
-      return skew_repair_seeds(result.cells, result.seeds, refinement.index(), regions, caps);
+      return skew_repair_seeds(skew, result.seeds, refinement.index(), regions, caps);
     });
     if (repairs.empty()) break;
     ++result.interior.repair_rounds;
     result.interior.repair_seeds += repairs.size();
     caps.insert(caps.end(), repairs.begin(), repairs.end());
     result.seeds.insert(result.seeds.end(), repairs.begin(), repairs.end());
-    result.cells = clock("cells", [&] {
+    skew = clock("skew repair", [&] {
       cells->add_seeds(result.seeds);
-      return cells->mesh();
+      return cells->skew_faces(kHighSkewness);
     });
-    const std::size_t skew = skew_faces(result.cells).size();
-    stalled = skew < fewest_skew ? 0 : stalled + 1;
-    fewest_skew = std::min(fewest_skew, skew);
+    stalled = skew.size() < fewest_skew ? 0 : stalled + 1;
+    fewest_skew = std::min(fewest_skew, skew.size());
   }
+  // The cells welded and assembled once, for the seeds as they stand.
+  if (progress && !progress({"assembly", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
+  result.cells = clock("assembly", [&] { return cells->mesh(); });
   for (const Seed& s : result.seeds) {
     if (s.kind == SeedKind::Outside) ++result.interior.outside_seeds;
     if (s.kind == SeedKind::Interior) ++result.interior.interior_seeds;
