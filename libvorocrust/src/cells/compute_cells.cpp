@@ -301,8 +301,12 @@ std::vector<CutFace> GrowingCells::skew_faces(double threshold) const {
             d != kNoCell ? std::optional<Point>(centroid[static_cast<std::size_t>(d)]) : std::nullopt;
         face.skewness = polygon_skewness(size(cell, f), point_at(cell, f), face.geometry, centroid[c], neighbour);
         if (!(face.skewness > threshold)) continue;
-        face.geometry.centroid = frame_.centre + frame_.scale * face.geometry.centroid;  // out of the frame
+        // Out of the frame.
+        const auto original = [&](const Point& p) { return Point(frame_.centre + frame_.scale * p); };
+        face.geometry.centroid = original(face.geometry.centroid);
         face.geometry.area *= frame_.scale * frame_.scale;
+        face.owner_centroid = original(centroid[c]);
+        if (neighbour) face.neighbour_centroid = original(*neighbour);
         found[c].push_back(face);
       }
     });

@@ -33,6 +33,8 @@ struct CutFace {
   bool between_cells = false;         // whether the seed across has a cell
   FaceGeometry geometry;              // normal from the owner's side
   double skewness = 0;                // as face_skewness measures it, with the cells' centroids as cut
+  Point owner_centroid = Point::Zero();
+  Point neighbour_centroid = Point::Zero();  // where there is a cell across
 };
 
 class GrowingCells {

@@ -162,6 +162,30 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     const std::int32_t region = s.region;
     if (t.region != region) continue;
     const FaceGeometry& g = face.geometry;
+    // A seed at `target`, pushed out of the balls near it, if it stays nearer the target than
+    // `from` (a seed of the face) is: it takes the part of the cells about the target.
+    const auto place_near = [&](const Point& target, const Point& from) {
+      const double reach = (target - from).norm();
+      const std::optional<Point> p = place.pushed_clear(target);
+      if (!p || !(reach > 0) || !((*p - target).norm() < reach) || regions.region_of(*p, g.normal) != region ||
+          place.near_placed(*p)) {
+        return false;
+      }
+      Seed seed{*p, region, reach, SeedKind::Interior};
+      place.remember(seed);
+      added.push_back(seed);
+      return true;
+    };
+    // The cell whose centroid lies farther from its seed split at its centroid: that draws the
+    // centroid back toward the seed, and the link between the two centroids back through the face.
+    const auto split_farther = [&] {
+      const bool owner_farther = (face.owner_centroid - s.position).norm() >= (face.neighbour_centroid - t.position).norm();
+      return owner_farther ? place_near(face.owner_centroid, s.position) : place_near(face.neighbour_centroid, t.position);
+    };
+    // Two seeds on spheres (poles, repairs) have cells squeezed between the balls; a seed on yet
+    // another sphere makes one more such cell beside them (where openmeeg_HeadNNa1's south half
+    // crosses its skull, rounds of them never ended), so these are split first.
+    if (s.kind == SeedKind::Cap && t.kind == SeedKind::Cap && split_farther()) continue;
     spheres_through(balls, s.position, s.radius, a);
     spheres_through(balls, t.position, t.radius, b);
     // The spheres either seed lies on, those of both first (their centres lie on the face's
@@ -190,16 +214,10 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     }
     if (repaired) continue;
     // No sphere takes one (a face between two seeds on no common sphere, often one a repair
-    // seed): a seed at the face's centroid, pushed out of the balls near it, takes the small
-    // face's corner of both cells, as long as it stays no farther from the face than they are.
-    const double clearance = (g.centroid - s.position).norm();
-    const std::optional<Point> p = place.pushed_clear(g.centroid);
-    if (p && clearance > 0 && (*p - g.centroid).norm() < clearance && regions.region_of(*p, g.normal) == region &&
-        !place.near_placed(*p)) {
-      Seed seed{*p, region, clearance, SeedKind::Interior};
-      place.remember(seed);
-      added.push_back(seed);
-    }
+    // seed): a seed at the face's centroid takes the small face's corner of both cells.
+    if (place_near(g.centroid, s.position)) continue;
+    // No seed may go near the face either (it lies inside a ball).
+    split_farther();
   }
   return added;
 }

@@ -16,7 +16,9 @@
 //   material's seeds there;
 // - skew_repair_seeds: where a face of the cells is still highly skew, between two cells of one
 //   material, a seed toward the face on a sphere either seed lies on; where no sphere takes one,
-//   a seed at the face's centroid when no ball holds that point.
+//   a seed at the face's centroid, pushed out of the balls; where that is no nearer the face
+//   than the cells' seeds, a seed at the centroid of the cell whose centroid lies farther from
+//   its seed, which splits it. Faces between two seeds on spheres are split first.
 // A seed is kept only where it lies in the material it is placed for (a ray to the surface says
 // so), inside no other ball, and clear of the seeds already placed this way.
 #pragma once
