@@ -1,5 +1,6 @@
 #include "export/text_numbers.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -21,7 +22,10 @@ void append_number(std::string& out, long long n) {
 
 std::string fortran_e(double x, int width) {
   if (std::isfinite(x)) {
-    for (int digits = width; digits >= 0; --digits) {
+    // The fewest characters besides the digits after the point: "d.", "e+dd" and a sign. Fewer
+    // digits are tried where rounding or a wider exponent needs them.
+    const int overhead = 6 + (std::signbit(x) ? 1 : 0);
+    for (int digits = std::max(width - overhead, 0); digits >= 0; --digits) {
       char buffer[48];
       const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::scientific, digits);
       if (ec != std::errc{}) continue;

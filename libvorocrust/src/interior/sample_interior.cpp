@@ -121,6 +121,11 @@ class InteriorSampler {
       const Point z = seeds_[from].position;
       const double r = seeds_[from].radius;
       gather_spheres(z, 2 * r, near);
+      // Most spokes end at the first sphere that covers all of them: the spheres nearest to
+      // reaching z first, the big ones among equals.
+      std::stable_sort(near.begin(), near.end(), [&](const BallTree::Sphere& a, const BallTree::Sphere& b) {
+        return (a.centre - z).norm() - a.radius < (b.centre - z).norm() - b.radius;
+      });
       for (int misses = 0; misses < options_.misses;) {
         ++stats_.spokes;
         Point direction(normal(rng_), normal(rng_), normal(rng_));
