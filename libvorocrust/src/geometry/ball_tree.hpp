@@ -4,8 +4,10 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -20,13 +22,23 @@ namespace vorocrust {
 //
 // Each node knows the box of the centres below it and the largest radius below it, which bounds
 // every query at any time. (The paper bounds neighbourhoods through the Lipschitz radii, which
-// hold only once C3 is enforced.) Shrinking leaves that radius stale, never too small.
+// hold only once C3 is enforced.) Shrinking leaves that radius stale, never too small. It knows
+// the smallest radius below it too, which shrinking keeps exact: the Lipschitz bound at p gains
+// nothing from a node whose smallest radius plus L times its distance already reaches the bound.
 class BallTree {
  public:
   void insert(const Point& centre, double radius, std::uint32_t ball);
   void shrink(std::uint32_t ball, double radius) {
     const auto [leaf, position] = slot_[ball];
     leaves_[leaf][position].radius = radius;
+    // The path the ball took on insertion, each node's smallest radius lowered.
+    const Point& centre = leaves_[leaf][position].centre;
+    for (std::uint32_t index = 0;;) {
+      Node& node = nodes_[index];
+      node.min_radius = std::min(node.min_radius, radius);
+      if (node.axis < 0) break;
+      index = node.child + (centre[node.axis] < node.split ? 0 : 1);
+    }
   }
 
   struct Sphere {
@@ -51,7 +63,10 @@ class BallTree {
                          double below = std::numeric_limits<double>::infinity()) const {
     double best = below;
     search(
-        p, [&](double d2, double, std::uint32_t newest) { return newest >= first && L * L * d2 < best * best; },
+        p,
+        [&](double d2, double, std::uint32_t newest, double min_radius) {
+          return newest >= first && min_radius + L * std::sqrt(d2) < best;
+        },
         [&](const Sphere& s) {
           if (s.ball >= first) best = std::min(best, s.radius + L * (s.centre - p).norm());
         });
@@ -59,8 +74,8 @@ class BallTree {
   }
 
   // Calls visit(sphere) for every sphere in the subtrees that keep(squared distance from p to
-  // the subtree's box of centres, largest radius in it, newest ball in it) accepts; nearer
-  // subtrees first.
+  // the subtree's box of centres, largest radius in it, newest ball in it[, smallest radius in
+  // it]) accepts; nearer subtrees first.
   template <class Keep, class Visit>
   void search(const Point& p, Keep&& keep, Visit&& visit) const {
     if (!nodes_.empty()) search(0, p, keep, visit);
@@ -72,6 +87,7 @@ class BallTree {
     Point lo = Point::Constant(std::numeric_limits<double>::infinity());
     Point hi = Point::Constant(-std::numeric_limits<double>::infinity());
     double max_radius = 0;
+    double min_radius = std::numeric_limits<double>::infinity();
     std::uint32_t newest = 0;  // the largest ball index below: balls are numbered as they come
     int axis = -1;             // -1 for a leaf
     double split = 0;
@@ -80,6 +96,7 @@ class BallTree {
       lo = lo.cwiseMin(centre);
       hi = hi.cwiseMax(centre);
       max_radius = std::max(max_radius, radius);
+      min_radius = std::min(min_radius, radius);
       newest = std::max(newest, ball);
     }
   };
@@ -87,7 +104,12 @@ class BallTree {
   template <class Keep, class Visit>
   void search(std::uint32_t index, const Point& p, Keep& keep, Visit& visit) const {
     const Node& node = nodes_[index];
-    if (!keep((p - p.cwiseMax(node.lo).cwiseMin(node.hi)).squaredNorm(), node.max_radius, node.newest)) return;
+    const double d2 = (p - p.cwiseMax(node.lo).cwiseMin(node.hi)).squaredNorm();
+    if constexpr (std::is_invocable_v<Keep&, double, double, std::uint32_t, double>) {
+      if (!keep(d2, node.max_radius, node.newest, node.min_radius)) return;
+    } else {
+      if (!keep(d2, node.max_radius, node.newest)) return;
+    }
     if (node.axis < 0) {
       for (const Sphere& s : leaves_[node.child]) visit(s);
       return;

@@ -123,9 +123,7 @@ class InteriorSampler {
       gather_spheres(z, 2 * r, near);
       // Most spokes end at the first sphere that covers all of them: the spheres nearest to
       // reaching z first, the big ones among equals.
-      std::stable_sort(near.begin(), near.end(), [&](const BallTree::Sphere& a, const BallTree::Sphere& b) {
-        return (a.centre - z).norm() - a.radius < (b.centre - z).norm() - b.radius;
-      });
+      order_nearest_first(z, near);
       for (int misses = 0; misses < options_.misses;) {
         ++stats_.spokes;
         Point direction(normal(rng_), normal(rng_), normal(rng_));
@@ -258,6 +256,18 @@ class InteriorSampler {
     }
   }
 
+  // The spheres by their distance from reaching z, equals in the order given.
+  void order_nearest_first(const Point& z, std::vector<BallTree::Sphere>& spheres) {
+    keyed_.clear();
+    for (std::uint32_t k = 0; k < spheres.size(); ++k) {
+      keyed_.emplace_back((spheres[k].centre - z).norm() - spheres[k].radius, k);
+    }
+    std::sort(keyed_.begin(), keyed_.end());
+    ordered_.clear();
+    for (const auto& [gap, k] : keyed_) ordered_.push_back(spheres[k]);
+    spheres.swap(ordered_);
+  }
+
   // A point of the spoke z + t d, t in [t_lo, t_hi], that none of the spheres covers and the box
   // holds, chosen uniformly (u in [0, 1)) over that part's length; nothing when no part is left.
   std::optional<double> uncovered_point(const Point& z, const Point& d, double t_lo, double t_hi, double u,
@@ -319,6 +329,8 @@ class InteriorSampler {
   std::vector<Seed> seeds_;
   std::uint32_t given_ = 0;  // seeds_[0, given_) were given (add_given), not sampled
   mutable std::vector<std::pair<double, double>> covered_, gaps_;
+  std::vector<std::pair<double, std::uint32_t>> keyed_;
+  std::vector<BallTree::Sphere> ordered_;
   mutable std::vector<std::uint32_t> balls_;
 };
 
