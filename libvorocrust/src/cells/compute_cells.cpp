@@ -254,10 +254,12 @@ void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
 
 namespace {
 
-// Whether three points of face f of a cell stand apart by more than welding unites (within ten
-// times its first tolerance): the faces that welding leaves with two points or one, it drops.
+// Whether three points of face f of a cell stand apart by more than welding's first tolerance
+// unites: the faces that welding leaves with two points or one, it drops. (Welding also unites
+// points in chains across cells, and at higher tolerances in its fallbacks; a face it drops so
+// is still listed here, which costs a repair seed at most, where a face missed would stay skew.)
 bool spans_an_area(const RawCell& cell, std::size_t f, const Point& seed) {
-  constexpr double kApart = 1e-8;
+  constexpr double kApart = 1e-9;
   std::array<const Point*, 3> apart{};
   std::size_t found = 0;
   for (std::uint32_t k = cell.starts[f]; k < cell.starts[f + 1] && found < 3; ++k) {
