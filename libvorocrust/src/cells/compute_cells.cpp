@@ -279,6 +279,7 @@ std::vector<CutFace> GrowingCells::skew_faces(double threshold) const {
     return [&cell, f](std::size_t k) -> const Point& { return cell.vertices[cell.cycles[cell.starts[f] + k]]; };
   };
   const auto size = [](const RawCell& cell, std::size_t f) { return std::size_t{cell.starts[f + 1] - cell.starts[f]}; };
+  const auto original = [&](const Point& p) { return Point(frame_.centre + frame_.scale * p); };  // out of the frame
   std::vector<Point> centroid(raw_.size());
   std::vector<std::vector<CutFace>> found(raw_.size());
   in_arena([&] {
@@ -303,8 +304,6 @@ std::vector<CutFace> GrowingCells::skew_faces(double threshold) const {
             d != kNoCell ? std::optional<Point>(centroid[static_cast<std::size_t>(d)]) : std::nullopt;
         face.skewness = polygon_skewness(size(cell, f), point_at(cell, f), face.geometry, centroid[c], neighbour);
         if (!(face.skewness > threshold)) continue;
-        // Out of the frame.
-        const auto original = [&](const Point& p) { return Point(frame_.centre + frame_.scale * p); };
         face.geometry.centroid = original(face.geometry.centroid);
         face.geometry.area *= frame_.scale * frame_.scale;
         face.owner_centroid = original(centroid[c]);

@@ -32,13 +32,7 @@ class BallTree {
     const auto [leaf, position] = slot_[ball];
     leaves_[leaf][position].radius = radius;
     // The path the ball took on insertion, each node's smallest radius lowered.
-    const Point& centre = leaves_[leaf][position].centre;
-    for (std::uint32_t index = 0;;) {
-      Node& node = nodes_[index];
-      node.min_radius = std::min(node.min_radius, radius);
-      if (node.axis < 0) break;
-      index = node.child + (centre[node.axis] < node.split ? 0 : 1);
-    }
+    descend(leaves_[leaf][position].centre, [&](Node& node) { node.min_radius = std::min(node.min_radius, radius); });
   }
 
   struct Sphere {
@@ -118,6 +112,18 @@ class BallTree {
     search(node.child + nearer, p, keep, visit);
     search(node.child + 1 - nearer, p, keep, visit);
   }
+  // Calls at(node) on each node from the root to the leaf where `centre` belongs, the path every
+  // ball at `centre` took (splits send the centres below a node the same way); returns the leaf.
+  template <class AtNode>
+  std::uint32_t descend(const Point& centre, AtNode&& at) {
+    std::uint32_t index = 0;
+    for (;;) {
+      Node& node = nodes_[index];
+      at(node);
+      if (node.axis < 0) return index;
+      index = node.child + (centre[node.axis] < node.split ? 0 : 1);
+    }
+  }
   void split(std::uint32_t index);
   void place(std::uint32_t leaf, const Sphere& s) {
     slot_[s.ball] = {leaf, static_cast<std::uint32_t>(leaves_[leaf].size())};
@@ -134,13 +140,7 @@ inline void BallTree::insert(const Point& centre, double radius, std::uint32_t b
     nodes_.emplace_back();
     leaves_.emplace_back();
   }
-  std::uint32_t index = 0;
-  for (;;) {
-    Node& node = nodes_[index];
-    node.include(centre, radius, ball);
-    if (node.axis < 0) break;
-    index = node.child + (centre[node.axis] < node.split ? 0 : 1);
-  }
+  const std::uint32_t index = descend(centre, [&](Node& node) { node.include(centre, radius, ball); });
   if (slot_.size() <= ball) slot_.resize(ball + 1);
   place(nodes_[index].child, {centre, radius, ball});
   if (leaves_[nodes_[index].child].size() > kLeafSize) split(index);

@@ -194,8 +194,8 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
     cells.emplace(result.seeds, cells_options);
     return cells->skew_faces(kHighSkewness);
   });
-  // Faces still highly skew about a ball's centre get a seed on its sphere, and the cells about
-  // the new seeds are cut again (interior/cap_seeds.hpp). A repair seed in a thin wedge between
+  // Faces still highly skew get a seed on a sphere, at the face or in a cell that it splits, and
+  // the cells about the new seeds are cut again (interior/cap_seeds.hpp). A repair seed in a thin wedge between
   // crossing surfaces can make a skew face beside the one it removes, so rounds go on while the
   // count falls: two rounds without a fall, or a round with no seed to place, end it.
   constexpr int kRepairRounds = 24;
