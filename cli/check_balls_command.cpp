@@ -17,7 +17,11 @@ int run_check_balls(const CheckBallsArgs& args) {
     throw Error(Error::Kind::Usage, "check-balls needs the input meshes and then the balls CSV");
   }
   checker::BallCheckOptions options;
-  options.sharp_angle_degrees = args.sharp_angle_degrees;
+  MeshOptions mesher;  // the same defaults as the run that made the balls
+  mesher.smooth = args.smooth;
+  mesher.sharp_angle_degrees = args.sharp_angle_degrees;
+  options.sharp_angle_degrees = mesher.sharp_angle();
+  options.smooth = args.smooth;
   options.lipschitz = args.lipschitz;
   options.face_samples = args.face_samples;
   options.crease_samples = args.crease_samples;

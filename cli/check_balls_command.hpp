@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,8 @@ namespace vorocrust::cli {
 // The input meshes, then the balls CSV, as the last of `files`.
 struct CheckBallsArgs {
   std::vector<std::string> files;
-  double sharp_angle_degrees = MeshOptions{}.sharp_angle_degrees;  // the mesher's own defaults
+  bool smooth = false;
+  std::optional<double> sharp_angle_degrees;  // unset: the mesher's default for the mode
   double lipschitz = MeshOptions{}.lipschitz;
   std::size_t face_samples = 200000;
   std::size_t crease_samples = 50000;

@@ -54,18 +54,22 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   mesh_cmd->add_option("--lipschitz", mesh.options.lipschitz, "L in (0,1): how fast ball radii may vary")
       ->capture_default_str();
-  mesh_cmd->add_option("--sharp-angle", mesh.options.sharp_angle_degrees,
-                       "Normal deviation in degrees (0,90) above which an edge is a sharp crease; the default 30 "
-                       "keeps every crease of the shared CAD models (fandisk, joint, bracket, hinge); the paper "
-                       "uses 60 for smooth, coarsely tessellated models")
-      ->capture_default_str();
+  mesh_cmd->add_flag("--smooth", mesh.options.smooth,
+                     "The input approximates a smooth surface (a scan, a coarse tessellation of a curved shape): "
+                     "only boundary and non-manifold edges are sharp, however much the faces bend; the sharp "
+                     "angle defaults to 60 and the smoothing to 6 rounds, the paper's settings for smooth models");
+  mesh_cmd->add_option_function<double>(
+      "--sharp-angle", [&](double degrees) { mesh.options.sharp_angle_degrees = degrees; },
+      "Normal deviation in degrees (0,90) above which an edge is a sharp crease, and the most normals may turn "
+      "between co-smooth points; default 30, which keeps every crease of the shared CAD models (fandisk, joint, "
+      "bracket, hinge), or 60 with --smooth");
   mesh_cmd->add_option("--max-size", mesh.options.max_size, "Largest allowed ball radius and cell size");
   mesh_cmd->add_option("--sizing", mesh.options.sizing_file,
                        "Sizing file: lines 'x y z size' ('#' comments); sizes are interpolated between the points")
       ->check(CLI::ExistingFile);
-  mesh_cmd->add_option("--smoothing-iterations", mesh.options.smoothing_iterations,
-                       "Rounds of adaptive Loop subdivision inside smooth patches before refinement")
-      ->capture_default_str();
+  mesh_cmd->add_option_function<int>(
+      "--smoothing-iterations", [&](int rounds) { mesh.options.smoothing_iterations = rounds; },
+      "Rounds of adaptive Loop subdivision inside smooth patches before refinement; default 0, or 6 with --smooth");
   mesh_cmd->add_option("--box", mesh.box,
                        "The domain around open sheets (terrains, faults, horizons): xmin ymin zmin xmax ymax zmax. "
                        "Its sides join the surface, and what no material fills inside it becomes the material "
@@ -101,9 +105,13 @@ int main(int argc, char** argv) {
                         "Input meshes (.off .obj .stl .ply), then the balls CSV last: model.obj balls.csv")
       ->required()
       ->expected(2, CLI::detail::expected_max_vector_size);
-  check_cmd->add_option("--sharp-angle", check.sharp_angle_degrees,
-                        "Normal deviation in degrees (0,90) above which an edge is sharp; use the mesh's value")
-      ->capture_default_str();
+  check_cmd->add_flag("--smooth", check.smooth,
+                      "Only boundary and non-manifold edges are sharp, as with mesh --smooth (check the "
+                      "smoothed_surface.ply that run wrote)");
+  check_cmd->add_option_function<double>(
+      "--sharp-angle", [&](double degrees) { check.sharp_angle_degrees = degrees; },
+                        "Normal deviation in degrees (0,90) above which an edge is sharp; use the mesh's value "
+                        "(default 30, or 60 with --smooth)");
   check_cmd->add_option("--lipschitz", check.lipschitz, "L in (0,1) for condition C3; use the mesh's value")
       ->capture_default_str();
   check_cmd->add_option("--samples", check.face_samples, "Random sample points on faces, proportional to area")

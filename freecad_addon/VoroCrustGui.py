@@ -114,6 +114,12 @@ class VoronoiMeshPanel:
                               "L: how fast ball radii may vary")
         self.sharp_angle = spin(p.GetFloat("SharpAngle", defaults.sharp_angle), 1, 89, 1, 1,
                                 "Normal deviation in degrees above which an edge is a sharp crease")
+        self.smooth = QtGui.QCheckBox("Smooth surface")
+        self.smooth.setChecked(p.GetBool("Smooth", defaults.smooth))
+        self.smooth.setToolTip("The input approximates a smooth surface (a scan, a coarse tessellation of a curved "
+                               "shape): no edge is a crease however much its faces bend, only open and non-manifold "
+                               "edges are kept, and the surface is smoothed by Loop subdivision first")
+        self.smooth.toggled.connect(self._smooth_toggled)
         self.max_size = spin(p.GetFloat("MaxSize", 0.0), 0, 1e9, 1, 4, "Largest ball radius and cell size")
         self.max_size.setSpecialValueText("no bound")
         self.interior = QtGui.QComboBox()
@@ -137,7 +143,8 @@ class VoronoiMeshPanel:
         self.stop_after.setToolTip("cells: the whole mesh; surface: the surface seeds and surface (the volume "
                                    "files then hold the cells of the surface seeds)")
         for label, widget in (("Tessellation tolerance", self.tolerance), ("Lipschitz L", self.lipschitz),
-                              ("Sharp angle", self.sharp_angle), ("Maximum size", self.max_size),
+                              ("Surface", self.smooth), ("Sharp angle", self.sharp_angle),
+                              ("Maximum size", self.max_size),
                               ("Interior", self.interior), ("CVT iterations", self.cvt_iterations), ("Seed", self.seed),
                               ("Stop after", self.stop_after)):
             grid.addRow(label, widget)
@@ -158,16 +165,26 @@ class VoronoiMeshPanel:
         self.status.setWordWrap(True)
         layout.addWidget(self.progress)
         layout.addWidget(self.status)
-        self._inputs = [self.tolerance, self.lipschitz, self.sharp_angle, self.max_size, self.interior, self.seed,
+        self._inputs = [self.tolerance, self.lipschitz, self.smooth, self.sharp_angle, self.max_size, self.interior,
+                        self.seed,
                         self.stop_after, folder_row, formats]  # the CVT box follows the interior mode
         return form
 
     def parameters(self):
         """The parameters as the panel shows them."""
         return VoroCrustMesher.Parameters(
-            lipschitz=self.lipschitz.value(), sharp_angle=self.sharp_angle.value(), max_size=self.max_size.value(),
+            lipschitz=self.lipschitz.value(), smooth=self.smooth.isChecked(), sharp_angle=self.sharp_angle.value(),
+            max_size=self.max_size.value(),
             interior=self.interior.currentText(), cvt_iterations=self.cvt_iterations.value(), seed=self.seed.value(),
             tolerance=self.tolerance.value(), stop_after=self.stop_after.currentText())
+
+    def _smooth_toggled(self, smooth):
+        # The paper's sharp angle for smooth models is 60 degrees; a value the user chose stays.
+        defaults = vorocrust.DEFAULT_OPTIONS
+        old, new = ((defaults["sharp_angle"], defaults["smooth_sharp_angle"]) if smooth
+                    else (defaults["smooth_sharp_angle"], defaults["sharp_angle"]))
+        if self.sharp_angle.value() == old:
+            self.sharp_angle.setValue(new)
 
     def chosen_formats(self):
         return [name for name, box in self.formats.items() if box.isChecked()]
@@ -176,6 +193,7 @@ class VoronoiMeshPanel:
         p = preferences()
         p.SetFloat("Tolerance", parameters.tolerance)
         p.SetFloat("Lipschitz", parameters.lipschitz)
+        p.SetBool("Smooth", parameters.smooth)
         p.SetFloat("SharpAngle", parameters.sharp_angle)
         p.SetFloat("MaxSize", parameters.max_size)
         p.SetString("Interior", parameters.interior)

@@ -49,6 +49,7 @@ class Parameters:
     """
 
     lipschitz: float = vorocrust.DEFAULT_OPTIONS["lipschitz"]
+    smooth: bool = vorocrust.DEFAULT_OPTIONS["smooth"]
     sharp_angle: float = vorocrust.DEFAULT_OPTIONS["sharp_angle"]
     max_size: float = 0.0
     interior: str = vorocrust.DEFAULT_OPTIONS["interior"]
@@ -60,7 +61,7 @@ class Parameters:
 
     def mesh_options(self):
         """The keyword arguments of vorocrust.mesh()."""
-        return dict(lipschitz=self.lipschitz, sharp_angle=self.sharp_angle,
+        return dict(lipschitz=self.lipschitz, smooth=self.smooth, sharp_angle=self.sharp_angle,
                     max_size=self.max_size if self.max_size > 0 else None, interior=self.interior,
                     cvt_iterations=self.cvt_iterations, stop_after=self.stop_after, seed=self.seed,
                     threads=self.threads)
@@ -288,6 +289,7 @@ class VoronoiMeshResult:
         add("App::PropertyLinkList", "Sources", "Input", "The Mesh objects and Part solids meshed")
         add("App::PropertyFloat", "Tolerance", "Input", "Tessellation tolerance of Part shapes")
         add("App::PropertyFloat", "Lipschitz", "Parameters", "L: how fast ball radii may vary")
+        add("App::PropertyBool", "Smooth", "Parameters", "The input is a smooth surface: only open edges are sharp")
         add("App::PropertyFloat", "SharpAngle", "Parameters", "Normal deviation (degrees) above which an edge is sharp")
         add("App::PropertyFloat", "MaxSize", "Parameters", "Largest ball radius and cell size (0: no bound)")
         add("App::PropertyString", "Interior", "Parameters", "How the volume is seeded: random, lattice or cvt")
@@ -317,6 +319,7 @@ class VoronoiMeshResult:
         obj.Sources = list(objects)
         obj.Tolerance = parameters.tolerance
         obj.Lipschitz = parameters.lipschitz
+        obj.Smooth = parameters.smooth
         obj.SharpAngle = parameters.sharp_angle
         obj.MaxSize = parameters.max_size
         obj.Interior = parameters.interior

@@ -24,6 +24,7 @@ namespace {
 // Parameter names: the keys of MeshLab filter scripts (.mlx), so they stay as they are.
 const char* const kLipschitz = "lipschitz";
 const char* const kSharpAngle = "sharpAngle";
+const char* const kSmoothSurface = "smoothSurface";
 const char* const kMaxSize = "maxSize";
 const char* const kSeed = "seed";
 const char* const kResolveSelfIntersections = "resolveSelfIntersections";
@@ -71,7 +72,12 @@ void add_refinement_parameters(const MeshModel* m, RichParameterList& parameters
   parameters.addParam(RichFloat(kLipschitz, float(defaults.lipschitz), "Lipschitz constant L",
                                 "How fast ball radii may vary, strictly between 0 and 1: a smaller L gives more, "
                                 "more evenly sized balls (VoroCrust paper, section 2.1)."));
-  parameters.addParam(RichFloat(kSharpAngle, float(defaults.sharp_angle_degrees), "Sharp angle (degrees)",
+  parameters.addParam(RichBool(kSmoothSurface, defaults.smooth, "Smooth surface",
+                               "The mesh approximates a smooth surface (a scan, a coarse tessellation of a curved "
+                               "shape): no edge is a crease however much its faces bend, only open and non-manifold "
+                               "edges are kept exactly, and the surface is smoothed by Loop subdivision first. "
+                               "Use a sharp angle of 60 with it, as the VoroCrust paper does for smooth models."));
+  parameters.addParam(RichFloat(kSharpAngle, float(defaults.sharp_angle()), "Sharp angle (degrees)",
                                 "An edge whose two faces' normals differ by more than this angle is a sharp crease, "
                                 "kept exactly. 30 keeps the creases of CAD models; 60 suits smooth, coarsely "
                                 "tessellated scans."));
@@ -91,6 +97,7 @@ void add_refinement_parameters(const MeshModel* m, RichParameterList& parameters
 vorocrust::MeshOptions mesh_options(const RichParameterList& parameters, vorocrust::Stage stage) {
   vorocrust::MeshOptions options;
   options.lipschitz = parameters.getFloat(kLipschitz);
+  options.smooth = parameters.getBool(kSmoothSurface);
   options.sharp_angle_degrees = parameters.getFloat(kSharpAngle);
   const float max_size = parameters.getAbsPerc(kMaxSize);
   if (max_size < 0) throw Error(Error::Kind::Usage, "the maximum size must be 0 (no bound) or positive");

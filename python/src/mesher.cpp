@@ -220,8 +220,11 @@ the same document as the CLI's OUTDIR/report.json.
     const MeshOptions defaults;
     py::dict d;
     d["lipschitz"] = defaults.lipschitz;
-    d["sharp_angle"] = defaults.sharp_angle_degrees;
-    d["smoothing_iterations"] = defaults.smoothing_iterations;
+    d["smooth"] = defaults.smooth;
+    d["sharp_angle"] = defaults.sharp_angle();  // with smooth=False; mesh() takes None for the mode's own
+    d["smoothing_iterations"] = defaults.smoothing_rounds();
+    d["smooth_sharp_angle"] = MeshOptions::kSmoothSharpAngleDegrees;
+    d["smooth_smoothing_iterations"] = MeshOptions::kSmoothSmoothingIterations;
     d["interior"] = to_string(defaults.interior);
     d["cvt_iterations"] = defaults.cvt_iterations;
     d["stop_after"] = stage_name(defaults.stop_after);
@@ -232,12 +235,14 @@ the same document as the CLI's OUTDIR/report.json.
   }
   m.def(
       "_mesh",
-      [](const py::object& model, double lipschitz, double sharp_angle, const py::object& max_size,
-         const py::object& sizing, int smoothing_iterations, const std::string& interior, int cvt_iterations,
+      [](const py::object& model, double lipschitz, bool smooth, const std::optional<double>& sharp_angle,
+         const py::object& max_size, const py::object& sizing, const std::optional<int>& smoothing_iterations,
+         const std::string& interior, int cvt_iterations,
          const std::string& stop_after, std::uint64_t seed, int threads, const std::string& self_intersections,
          const std::optional<std::array<double, 6>>& box, const py::object& progress) {
         MeshOptions options;
         options.lipschitz = lipschitz;
+        options.smooth = smooth;
         options.sharp_angle_degrees = sharp_angle;
         options.max_size = max_size.is_none() ? std::numeric_limits<double>::infinity() : max_size.cast<double>();
         if (!sizing.is_none()) options.sizing_file = to_path(sizing);
@@ -251,7 +256,8 @@ the same document as the CLI's OUTDIR/report.json.
         options.self_intersections = self_intersections_named(self_intersections);
         return run_mesh(model, options, progress);
       },
-      py::arg("model"), py::arg("lipschitz"), py::arg("sharp_angle"), py::arg("max_size"), py::arg("sizing"),
+      py::arg("model"), py::arg("lipschitz"), py::arg("smooth"), py::arg("sharp_angle"), py::arg("max_size"),
+      py::arg("sizing"),
       py::arg("smoothing_iterations"), py::arg("interior"), py::arg("cvt_iterations"), py::arg("stop_after"),
       py::arg("seed"), py::arg("threads"), py::arg("self_intersections"), py::arg("box"), py::arg("progress"),
       "The pipeline behind vorocrust.mesh(), which documents the arguments.");

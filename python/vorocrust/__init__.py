@@ -81,8 +81,8 @@ OUTPUT_FORMATS = {
 }
 
 
-def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_OPTIONS["sharp_angle"],
-         max_size=None, sizing=None, smoothing_iterations=DEFAULT_OPTIONS["smoothing_iterations"],
+def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTIONS["smooth"], sharp_angle=None,
+         max_size=None, sizing=None, smoothing_iterations=None,
          interior=DEFAULT_OPTIONS["interior"], cvt_iterations=DEFAULT_OPTIONS["cvt_iterations"],
          stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
          self_intersections=DEFAULT_OPTIONS["self_intersections"], box=None, progress=None):
@@ -91,11 +91,14 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_O
     model: a file path, a list of paths (merged into one model, one group per file), a
         Surface, or a (vertices, triangles) pair of arrays (n x 3 numbers, m x 3 indices).
     lipschitz: L in (0, 1), how fast ball radii may vary (CLI --lipschitz).
+    smooth: the model approximates a smooth surface (a scan, a coarse tessellation of a curved
+        shape): only boundary and non-manifold edges are sharp, however much faces bend (--smooth).
     sharp_angle: normal deviation in degrees (0, 90) above which an edge is a sharp crease
-        (--sharp-angle).
+        (--sharp-angle); None: DEFAULT_OPTIONS["sharp_angle"], or ["smooth_sharp_angle"] when smooth.
     max_size: largest ball radius and cell size, None for no bound (--max-size).
     sizing: a sizing file of lines "x y z size", interpolated (--sizing).
-    smoothing_iterations: rounds of adaptive Loop subdivision inside smooth patches.
+    smoothing_iterations: rounds of adaptive Loop subdivision inside smooth patches; None: none,
+        or DEFAULT_OPTIONS["smooth_smoothing_iterations"] when smooth.
     interior: how the volume is seeded: "random", "lattice" or "cvt" (paper 2.5).
     cvt_iterations: Lloyd iterations of interior="cvt".
     stop_after: "balls", "surface" or "cells" (the whole mesh).
@@ -121,9 +124,11 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], sharp_angle=DEFAULT_O
     stage this version of the library does not have.
     """
     return _vorocrust._mesh(
-        model, lipschitz=float(lipschitz), sharp_angle=float(sharp_angle),
+        model, lipschitz=float(lipschitz), smooth=bool(smooth),
+        sharp_angle=None if sharp_angle is None else float(sharp_angle),
         max_size=None if max_size is None or math.isinf(max_size) else float(max_size), sizing=sizing,
-        smoothing_iterations=int(smoothing_iterations), interior=interior,
+        smoothing_iterations=None if smoothing_iterations is None else int(smoothing_iterations),
+        interior=interior,
         cvt_iterations=int(cvt_iterations), stop_after=stop_after, seed=int(seed), threads=int(threads),
         self_intersections=self_intersections,
         box=None if box is None else tuple(float(x) for x in box), progress=progress)

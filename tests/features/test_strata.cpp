@@ -14,10 +14,11 @@ namespace {
 
 constexpr double kDegree = std::numbers::pi / 180;
 
-Strata strata_of(const std::string& model, double degrees = 30) {
+Strata strata_of(const std::string& model, double degrees = 30,
+                 FeatureDetection detection = FeatureDetection::SharpAndBoundary) {
   SurfaceMesh mesh = read_mesh(test::model(model));
   (void)validate(mesh);
-  return detect_strata(mesh, degrees * kDegree);
+  return detect_strata(mesh, degrees * kDegree, detection);
 }
 
 // Invariants every detection must satisfy, whatever the model.
@@ -94,6 +95,41 @@ TEST(Strata, OpenBoundaryIsACycleCrease) {
     for (Index e : c.edges) boundary_edges += s.topology.is_boundary(e);
   }
   EXPECT_EQ(boundary_edges, 56u);
+}
+
+TEST(Strata, ASmoothScanHasNoFeaturesWhereTheRulesFindMany) {
+  // The decimated bunny bends past 60 degrees across 59 edges: creases by the paper's rules.
+  const Strata by_angle = strata_of("igl_bunny.off", 60);
+  EXPECT_GT(by_angle.corners.size(), 100u);
+  const Strata smooth = strata_of("igl_bunny.off", 60, FeatureDetection::BoundaryOnly);
+  expect_consistent(smooth);
+  EXPECT_TRUE(smooth.corners.empty());
+  EXPECT_TRUE(smooth.creases.empty());
+  EXPECT_EQ(smooth.num_patches, 1u);
+}
+
+TEST(Strata, ASmoothSurfaceKeepsItsBoundaryAndNonManifoldEdges) {
+  // Taken as smooth, a surface still has the edges where other than two faces meet, and the
+  // corners where they end or branch; the fold between the cubes' faces is no longer a crease.
+  for (const char* model : {"igl_camelhead.off", "cgal_cubes_edge_contact.off"}) {
+    SCOPED_TRACE(model);
+    const Strata rules = strata_of(model, 60);
+    const Strata smooth = strata_of(model, 60, FeatureDetection::BoundaryOnly);
+    expect_consistent(smooth);
+    for (std::size_t e = 0; e < smooth.topology.num_edges(); ++e) {
+      EXPECT_EQ(smooth.sharp_edge[e], smooth.topology.valence(e) != 2) << "edge " << e;
+      if (smooth.sharp_edge[e]) EXPECT_TRUE(rules.sharp_edge[e]);
+    }
+  }
+  const Strata camel = strata_of("igl_camelhead.off", 60, FeatureDetection::BoundaryOnly);
+  std::size_t crease_edges = 0;
+  for (const Crease& c : camel.creases) crease_edges += c.edges.size();
+  EXPECT_EQ(crease_edges, 56u);  // the rim of the open neck, all of it
+  EXPECT_EQ(camel.num_patches, 1u);
+  const Strata cubes = strata_of("cgal_cubes_edge_contact.off", 30, FeatureDetection::BoundaryOnly);
+  EXPECT_EQ(cubes.creases.size(), 1u);  // the edge the cubes share, between its two corners
+  EXPECT_EQ(cubes.corners.size(), 2u);
+  EXPECT_EQ(cubes.num_patches, 2u);
 }
 
 TEST(Strata, SharpCadModelsAreConsistentAndAngleMonotone) {

@@ -43,6 +43,8 @@ def parse_arguments():
     p = argparse.ArgumentParser()
     p.add_argument("case", choices=["balls", "invalid", "voronoi-surface", "voronoi-vtu", "voronoi-layers"])
     p.add_argument("model", nargs="?")
+    p.add_argument("--smooth", action="store_true",
+                   help="the filter's 'Smooth surface' with a sharp angle of 60, against the program's --smooth")
     p.add_argument("--plugin", required=True, help="libfilter_vorocrust.so under test")
     p.add_argument("--meshlabserver", required=True, help="the installed meshlabserver")
     p.add_argument("--meshlab-lib-dir", required=True, help="the folder of libmeshlab-common.so")
@@ -251,13 +253,15 @@ def script(path, filter_name, **parameters):
     return path
 
 
-def balls_script(path, seed=SEED, lipschitz=0.25, resolve=True):
-    return script(path, "VoroCrust Protecting Balls", lipschitz=lipschitz, sharpAngle=30.0,
+def balls_script(path, seed=SEED, lipschitz=0.25, resolve=True, smooth=False):
+    return script(path, "VoroCrust Protecting Balls", lipschitz=lipschitz, smoothSurface=smooth,
+                  sharpAngle=60.0 if smooth else 30.0,
                   maxSize=("abs", 0.0), seed=seed, resolveSelfIntersections=resolve)
 
 
 def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20, all_visible=False, resolve=True):
-    return script(path, "VoroCrust Voronoi Mesh", lipschitz=0.25, sharpAngle=30.0, maxSize=("abs", 0.0), seed=seed,
+    return script(path, "VoroCrust Voronoi Mesh", lipschitz=0.25, smoothSurface=False, sharpAngle=30.0,
+                  maxSize=("abs", 0.0), seed=seed,
                   resolveSelfIntersections=resolve, interior=("enum", 0), cvtIterations=cvt_iterations, outputFolder=folder, writeVtu=vtu,
                   writeOpenFoam=openfoam, writeTough=openfoam, writePflotran=openfoam, writeSeeds=True,
                   writeSurface=True, allVisibleLayers=all_visible)
@@ -312,7 +316,8 @@ class MeshLabCase(unittest.TestCase):
         self.assertEqual(status, 0, output[-3000:])
         cli_out = os.path.join(self.work, "cli")
         r = subprocess.run([ARGS.cli, "mesh", loaded, "-o", cli_out, "--stop-after", stop_after, "--seed", str(SEED),
-                            "--quiet"], capture_output=True, text=True, timeout=1800)
+                            "--quiet", *(["--smooth"] if ARGS.smooth else [])],
+                           capture_output=True, text=True, timeout=1800)
         self.assertEqual(r.returncode, 0, r.stderr)
         return cli_out
 
@@ -334,7 +339,7 @@ class MeshLabCase(unittest.TestCase):
 
         out = os.path.join(self.work, "balls.ply")
         status, output = self.meshlabserver("-i", model, "-o", out, "-m", "vq", "vc", "-s",
-                                            balls_script(os.path.join(self.work, "balls.mlx")))
+                                            balls_script(os.path.join(self.work, "balls.mlx"), smooth=ARGS.smooth))
         self.assertEqual(status, 0, output[-3000:])
         self.assertIn(f"VoroCrust: {len(expected)} balls", output)
         got = read_ply_vertices(out)
@@ -344,6 +349,8 @@ class MeshLabCase(unittest.TestCase):
             self.assertAlmostEqual(v["quality"], radius, delta=1e-6 * radius, msg=f"ball {k} radius")
             self.assertEqual((v["red"], v["green"], v["blue"]), STRATUM_COLOURS[row[4]], f"ball {k} type")
         types = {t: sum(row[4] == t for row in expected) for t in STRATUM_COLOURS}
+        if ARGS.smooth:  # a closed smooth surface has no corner and no crease
+            self.assertEqual((types["corner"], types["crease"]), (0, 0))
         print(f"{ARGS.model}: {len(got)} balls from MeshLab and from the vorocrust program with seed {SEED} "
               f"({types['corner']} corner, {types['crease']} crease, {types['patch']} patch); radii and centres agree")
 

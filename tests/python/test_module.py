@@ -207,6 +207,25 @@ class Module(unittest.TestCase):
         np.testing.assert_array_equal(result.surface.triangles, self.result.surface.triangles)
         self.assertEqual(result.report()["inputs"], ["arrays"])
 
+    def test_smooth_is_the_programs_smooth_with_the_papers_settings(self):
+        # smooth=True leaves the sharp angle and the smoothing to the mode: 60 degrees, 6 rounds.
+        bimba = os.path.join(MODELS, "directional_bimba.off")
+        out = self.out("smooth")
+        r = cli("mesh", bimba, "-o", out, "--smooth", "--stop-after", "balls", "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        result = vorocrust.mesh(bimba, smooth=True, stop_after="balls")
+        report = result.report()
+        self.assertEqual(report["options"]["sharp_angle_degrees"], 60)
+        self.assertEqual(report["options"]["smoothing_iterations"], 6)
+        self.assertTrue(report["options"]["smooth"])
+        self.assertEqual(report["features"]["corners"], 0)  # 397 by the default rules
+        self.assertEqual(report["features"]["smoothing_iterations"], 6)
+        vorocrust.write_balls(result.balls, os.path.join(out, "module_balls.csv"))
+        self.assertEqual(read_bytes(os.path.join(out, "module_balls.csv")), read_bytes(os.path.join(out, "balls.csv")))
+        # An explicit angle wins over the mode's.
+        self.assertEqual(vorocrust.mesh(bimba, smooth=True, sharp_angle=45, stop_after="balls")
+                         .report()["options"]["sharp_angle_degrees"], 45)
+
     def test_an_open_sheet_meshes_in_the_box_given(self):
         # A square sheet across the middle of the unit cube: one material on both sides.
         vertices = np.array([[0.2, 0.2, 0.5], [0.8, 0.2, 0.5], [0.8, 0.8, 0.5], [0.2, 0.8, 0.5]])

@@ -51,18 +51,33 @@ const char* to_string(SelfIntersections mode) noexcept;
 
 struct MeshOptions {
   double lipschitz = 0.25;  // L < 1: how fast ball radii may vary
-  // theta#: an edge whose faces' normals differ by more than this is a sharp crease. 30 degrees
-  // keeps every crease of the shared CAD models (fandisk, joint, bracket, hinge) while the
-  // tessellation rings of curved surfaces (22.5 degrees on sandia_torus) stay smooth; the paper
-  // uses 60 for smooth, coarsely tessellated models.
-  double sharp_angle_degrees = 30.0;
+  // The input approximates a smooth surface (a scan, a coarse tessellation of a curved shape):
+  // no edge is a crease for the angle its faces make, only boundary and non-manifold edges are
+  // sharp, and unless told otherwise theta# is 60 degrees and the patches take 6 rounds of Loop
+  // subdivision, the paper's settings for smooth models. On igl_bunny this takes the surface's
+  // smallest angle from 0.9 to 23 degrees: the creases the default rules find on a decimated scan
+  // are not the shape's and pinch the balls around them.
+  bool smooth = false;
+  // theta#: an edge whose faces' normals differ by more than this is a sharp crease; it also
+  // bounds how far normals may turn between co-smooth points. Unset: 30 degrees, which keeps
+  // every crease of the shared CAD models (fandisk, joint, bracket, hinge) while the tessellation
+  // rings of curved surfaces (22.5 degrees on sandia_torus) stay smooth; 60 with `smooth`.
+  std::optional<double> sharp_angle_degrees;
   double max_size = std::numeric_limits<double>::infinity();  // uniform sizing bound
   std::filesystem::path sizing_file;  // optional: lines "x y z size", interpolated
   // Rounds of adaptive Loop subdivision inside patches (paper 2.2 uses 6), at most: fewer are
-  // applied when more would make a feature (checked by detecting features afresh). Off by
-  // default while it costs more than it gives: the surface grows (sandia_torus: 9 216 faces to
-  // 189 504) and the refinement with it.
-  int smoothing_iterations = 0;
+  // applied when more would make a feature (checked by detecting features afresh). Unset: 0, as
+  // on CAD models it costs more than it gives (the surface grows, sandia_torus 9 216 faces to
+  // 189 504, and the refinement with it); 6 with `smooth`.
+  std::optional<int> smoothing_iterations;
+
+  static constexpr double kSharpAngleDegrees = 30, kSmoothSharpAngleDegrees = 60;
+  static constexpr int kSmoothSmoothingIterations = 6;
+  // The values in force: the ones set, or the defaults of the mode.
+  double sharp_angle() const {
+    return sharp_angle_degrees.value_or(smooth ? kSmoothSharpAngleDegrees : kSharpAngleDegrees);
+  }
+  int smoothing_rounds() const { return smoothing_iterations.value_or(smooth ? kSmoothSmoothingIterations : 0); }
   // The domain around open sheets (paper Figure 17): {xmin, ymin, zmin, xmax, ymax, zmax}. Its
   // sides join the surface and what is outside every material inside it becomes the material
   // "domain"; an unlabelled sheet then has that material on both sides and splits the cells

@@ -189,7 +189,8 @@ Strata build_strata(const SurfaceMesh& mesh, std::vector<bool> sharp_edge_by_top
   return s;
 }
 
-Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle) {
+Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle, FeatureDetection detection) {
+  const bool by_angle = detection == FeatureDetection::SharpAndBoundary;
   Strata s;
   compute_topology_and_normals(mesh, s);
   const EdgeTopology& topo = s.topology;
@@ -208,7 +209,7 @@ Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle) {
     if (edge_direction(mesh.triangles[faces[0]], a, b) == edge_direction(mesh.triangles[faces[1]], a, b)) {
       cos_angle = -cos_angle;  // inconsistent neighbours (a non-orientable patch): compare as lines
     }
-    s.sharp_edge[e] = cos_angle < cos_sharp;
+    s.sharp_edge[e] = by_angle && cos_angle < cos_sharp;
   }
 
   const VertexEdges ve = vertex_edges(mesh.num_vertices(), topo);
@@ -226,7 +227,7 @@ Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle) {
       // The crease goes straight on when a and b are opposite; it turns by the angle between b and -a.
       is_corner = (-a).dot(b) < cos_sharp;
     }
-    if (!is_corner) is_corner = sector_spreads(s, ve, v, cos_sharp);
+    if (!is_corner && by_angle) is_corner = sector_spreads(s, ve, v, cos_sharp);
     corner[v] = is_corner;
   }
   complete_strata(mesh, s, corner);

@@ -45,8 +45,18 @@ struct Strata {
   std::vector<std::vector<Index>> crease_patches;  // patches with a face along each crease
 };
 
+// Which edges may be sharp. A scan or a coarse tessellation of a curved shape bends by more than
+// theta# between neighbouring faces without having a crease there (igl_bunny: 59 edges past 60
+// degrees): as a smooth surface its only features are its boundary and non-manifold edges, with
+// the corners where those end, branch or turn by more than theta#.
+enum class FeatureDetection {
+  SharpAndBoundary,  // the paper's rules: edges bent past theta#, sectors spread by theta#, and the boundary
+  BoundaryOnly,      // the surface is smooth: nothing is sharp for its angle
+};
+
 // Detects the strata of `mesh` for the sharp angle theta# (radians, in (0, pi/2)).
-Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle);
+Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle,
+                     FeatureDetection detection = FeatureDetection::SharpAndBoundary);
 
 // The strata of `mesh` for sharp edges (by edge of its EdgeTopology) and corners decided already,
 // as after smoothing, which carries the input's features through subdivision. Edges with other

@@ -26,13 +26,13 @@ void MeshOptions::check() const {
   if (!(lipschitz > 0 && lipschitz < 1)) {
     throw Error(Error::Kind::Usage, "--lipschitz must lie strictly between 0 and 1, got " + std::to_string(lipschitz));
   }
-  if (!(sharp_angle_degrees > 0 && sharp_angle_degrees < 90)) {
+  if (!(sharp_angle() > 0 && sharp_angle() < 90)) {
     throw Error(Error::Kind::Usage,
-                "--sharp-angle must lie strictly between 0 and 90 degrees, got " + std::to_string(sharp_angle_degrees));
+                "--sharp-angle must lie strictly between 0 and 90 degrees, got " + std::to_string(sharp_angle()));
   }
   if (!(max_size > 0)) throw Error(Error::Kind::Usage, "--max-size must be positive, got " + std::to_string(max_size));
   if (threads < 0) throw Error(Error::Kind::Usage, "--threads must be 0 (all) or positive");
-  if (smoothing_iterations < 0) throw Error(Error::Kind::Usage, "--smoothing-iterations must be 0 or positive");
+  if (smoothing_rounds() < 0) throw Error(Error::Kind::Usage, "--smoothing-iterations must be 0 or positive");
   if (cvt_iterations < 0) throw Error(Error::Kind::Usage, "--cvt-iterations must be 0 or positive");
 }
 
@@ -93,11 +93,13 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   }
   // The regions of space the surface cuts out, each side of each face labelled.
   result.regions = clock("regions", [&] { return label_regions(input); });
-  const double sharp_angle = options.sharp_angle_degrees * std::numbers::pi / 180;
+  const double sharp_angle = options.sharp_angle() * std::numbers::pi / 180;
+  const FeatureDetection detection =
+      options.smooth ? FeatureDetection::BoundaryOnly : FeatureDetection::SharpAndBoundary;
   if (progress && !progress({"features", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
 
   // Features (paper 2.2).
-  Strata strata = clock("features", [&] { return detect_strata(input, sharp_angle); });
+  Strata strata = clock("features", [&] { return detect_strata(input, sharp_angle, detection); });
   for (bool sharp : strata.sharp_edge) result.features.sharp_edges += sharp;
   result.features.corners = strata.corners.size();
   result.features.creases = strata.creases.size();
@@ -105,19 +107,19 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
 
   // Patch smoothing (paper 2.2): flatten the patches so nearby normals agree, features untouched.
   result.smoothed_input = input;
-  if (options.smoothing_iterations > 0) {
+  if (options.smoothing_rounds() > 0) {
     if (progress && !progress({"smoothing", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
     clock("smoothing", [&] {
       // Smoothing must flatten patches, not make features: when the smoothed surface, detected
       // afresh, has sharp edges or corners the carried-through features lack (a cone point
       // appears beside a corner on cgal_fandisk), the run takes one round fewer, down to none.
-      for (int rounds = options.smoothing_iterations; rounds > 0; --rounds) {
+      for (int rounds = options.smoothing_rounds(); rounds > 0; --rounds) {
         SmoothingOptions smoothing;
         smoothing.max_iterations = rounds;
         SmoothedSurface smoothed = smooth_patches(input, strata, smoothing);
         if (smoothed.iterations == 0) break;
         Strata carried = strata_after_smoothing(smoothed);
-        const Strata fresh = detect_strata(smoothed.mesh, sharp_angle);
+        const Strata fresh = detect_strata(smoothed.mesh, sharp_angle, detection);
         if (fresh.sharp_edge != carried.sharp_edge || fresh.corners != carried.corners) {
           result.features.smoothing_rounds_refused = rounds;
           continue;

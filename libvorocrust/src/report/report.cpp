@@ -191,9 +191,10 @@ std::string run_report_json(const RunReport& report, int indent) {
               {"inputs", report.inputs},
               {"options",
                {{"lipschitz", o.lipschitz},
-                {"sharp_angle_degrees", o.sharp_angle_degrees},
+                {"smooth", o.smooth},
+                {"sharp_angle_degrees", o.sharp_angle()},
                 {"max_size", std::isfinite(o.max_size) ? json(o.max_size) : json(nullptr)},
-                {"smoothing_iterations", o.smoothing_iterations},
+                {"smoothing_iterations", o.smoothing_rounds()},
                 {"sizing_file", o.sizing_file.string()},
                 {"stop_after", o.stop_after == Stage::Balls     ? "balls"
                                : o.stop_after == Stage::Surface ? "surface"
