@@ -112,7 +112,7 @@ class VoronoiMeshPanel:
         defaults = VoroCrustMesher.Parameters()
         self.lipschitz = spin(p.GetFloat("Lipschitz", defaults.lipschitz), 0.01, 0.99, 0.05, 2,
                               "L: how fast ball radii may vary")
-        self.sharp_angle = spin(p.GetFloat("SharpAngle", defaults.sharp_angle), 1, 89, 1, 1,
+        self.sharp_angle = spin(p.GetFloat("SharpAngle", vorocrust.DEFAULT_OPTIONS["sharp_angle"]), 1, 89, 1, 1,
                                 "Normal deviation in degrees above which an edge is a sharp crease")
         self.smooth = QtGui.QCheckBox("Smooth surface")
         self.smooth.setChecked(p.GetBool("Smooth", defaults.smooth))

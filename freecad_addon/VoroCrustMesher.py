@@ -50,7 +50,7 @@ class Parameters:
 
     lipschitz: float = vorocrust.DEFAULT_OPTIONS["lipschitz"]
     smooth: bool = vorocrust.DEFAULT_OPTIONS["smooth"]
-    sharp_angle: float = vorocrust.DEFAULT_OPTIONS["sharp_angle"]
+    sharp_angle: float = None  # None: the mode's default (vorocrust.mesh())
     max_size: float = 0.0
     interior: str = vorocrust.DEFAULT_OPTIONS["interior"]
     cvt_iterations: int = vorocrust.DEFAULT_OPTIONS["cvt_iterations"]
@@ -320,7 +320,7 @@ class VoronoiMeshResult:
         obj.Tolerance = parameters.tolerance
         obj.Lipschitz = parameters.lipschitz
         obj.Smooth = parameters.smooth
-        obj.SharpAngle = parameters.sharp_angle
+        obj.SharpAngle = result.report()["options"]["sharp_angle_degrees"]  # the angle in force
         obj.MaxSize = parameters.max_size
         obj.Interior = parameters.interior
         obj.CvtIterations = parameters.cvt_iterations

@@ -106,6 +106,19 @@ def main():
         report = json.load(f)
     check(report["status"] == "ok" and report["options"]["seed"] == 7, "report.json: %s" % report["status"])
     check(report["options"]["stop_after"] == STOP_AFTER, "report.json stage")
+    check(not result.Smooth and result.SharpAngle == 30 and not report["options"]["smooth"],
+          "default rules: Smooth %r, SharpAngle %r" % (result.Smooth, result.SharpAngle))
+
+    # The sphere as the smooth surface it is: the mode's own sharp angle and smoothing, no feature.
+    smooth = VoroCrustMesher.voronoi_mesh(
+        [sphere], dataclasses.replace(parameters, stop_after="surface", smooth=True),
+        output_dir=os.path.join(WORK, "smooth"), formats=["report"])
+    smooth_report = smooth.Proxy.result().report()
+    check(smooth.Smooth and smooth.SharpAngle == 60, "smooth: Smooth %r, SharpAngle %r" % (
+        smooth.Smooth, smooth.SharpAngle))
+    check(smooth_report["features"]["corners"] == 0 and smooth_report["options"]["smoothing_iterations"] == 6,
+          "smooth: features %s, options %s" % (smooth_report["features"], smooth_report["options"]))
+    check(smooth.TopologyMatches, "the smooth sphere's topology differs from the input's")
     check([g["name"] for g in report["input"]["groups"]] == EXPECTED_MATERIALS,
           "input groups %s" % report["input"]["groups"])
 
