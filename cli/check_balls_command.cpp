@@ -21,7 +21,6 @@ int run_check_balls(const CheckBallsArgs& args) {
   mesher.smooth = args.smooth;
   mesher.sharp_angle_degrees = args.sharp_angle_degrees;
   options.sharp_angle_degrees = mesher.sharp_angle();
-  options.smooth = args.smooth;
   options.lipschitz = args.lipschitz;
   options.face_samples = args.face_samples;
   options.crease_samples = args.crease_samples;

@@ -56,8 +56,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   mesh_cmd->add_flag("--smooth", mesh.options.smooth,
                      "The input approximates a smooth surface (a scan, a coarse tessellation of a curved shape): "
-                     "only boundary and non-manifold edges are sharp, however much the faces bend; the sharp "
-                     "angle defaults to 60 and the smoothing to 6 rounds, the paper's settings for smooth models");
+                     "it is smoothed as one patch (boundary and non-manifold edges stay) and its features are found "
+                     "on the result, so the folds of its tessellation are not creases; the sharp angle defaults to "
+                     "60 and the smoothing to 6 rounds, the paper's settings for smooth models");
   mesh_cmd->add_option_function<double>(
       "--sharp-angle", [&](double degrees) { mesh.options.sharp_angle_degrees = degrees; },
       "Normal deviation in degrees (0,90) above which an edge is a sharp crease, and the most normals may turn "
@@ -106,8 +107,8 @@ int main(int argc, char** argv) {
       ->required()
       ->expected(2, CLI::detail::expected_max_vector_size);
   check_cmd->add_flag("--smooth", check.smooth,
-                      "Only boundary and non-manifold edges are sharp, as with mesh --smooth (check the "
-                      "smoothed_surface.ply that run wrote)");
+                      "Balls of a mesh --smooth run: the sharp angle defaults to that run's (60); check them "
+                      "against the smoothed_surface.ply it wrote");
   check_cmd->add_option_function<double>(
       "--sharp-angle", [&](double degrees) { check.sharp_angle_degrees = degrees; },
                         "Normal deviation in degrees (0,90) above which an edge is sharp; use the mesh's value "

@@ -289,7 +289,7 @@ class VoronoiMeshResult:
         add("App::PropertyLinkList", "Sources", "Input", "The Mesh objects and Part solids meshed")
         add("App::PropertyFloat", "Tolerance", "Input", "Tessellation tolerance of Part shapes")
         add("App::PropertyFloat", "Lipschitz", "Parameters", "L: how fast ball radii may vary")
-        add("App::PropertyBool", "Smooth", "Parameters", "The input is a smooth surface: only open edges are sharp")
+        add("App::PropertyBool", "Smooth", "Parameters", "The input is a smooth surface: smoothed, then its creases found")
         add("App::PropertyFloat", "SharpAngle", "Parameters", "Normal deviation (degrees) above which an edge is sharp")
         add("App::PropertyFloat", "MaxSize", "Parameters", "Largest ball radius and cell size (0: no bound)")
         add("App::PropertyString", "Interior", "Parameters", "How the volume is seeded: random, lattice or cvt")

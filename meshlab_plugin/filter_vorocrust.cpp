@@ -74,8 +74,9 @@ void add_refinement_parameters(const MeshModel* m, RichParameterList& parameters
                                 "more evenly sized balls (VoroCrust paper, section 2.1)."));
   parameters.addParam(RichBool(kSmoothSurface, defaults.smooth, "Smooth surface",
                                "The mesh approximates a smooth surface (a scan, a coarse tessellation of a curved "
-                               "shape): no edge is a crease however much its faces bend, only open and non-manifold "
-                               "edges are kept exactly, and the surface is smoothed by Loop subdivision first. "
+                               "shape): it is smoothed by Loop subdivision as one patch (open and non-manifold edges "
+                               "stay) and its creases are found on the result, so the folds of its tessellation "
+                               "are none. "
                                "Use a sharp angle of 60 with it, as the VoroCrust paper does for smooth models."));
   parameters.addParam(RichFloat(kSharpAngle, float(defaults.sharp_angle()), "Sharp angle (degrees)",
                                 "An edge whose two faces' normals differ by more than this angle is a sharp crease, "

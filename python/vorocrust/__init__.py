@@ -92,7 +92,8 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTION
         Surface, or a (vertices, triangles) pair of arrays (n x 3 numbers, m x 3 indices).
     lipschitz: L in (0, 1), how fast ball radii may vary (CLI --lipschitz).
     smooth: the model approximates a smooth surface (a scan, a coarse tessellation of a curved
-        shape): only boundary and non-manifold edges are sharp, however much faces bend (--smooth).
+        shape): it is smoothed as one patch and its features are found on the result, so the
+        folds of its tessellation are not creases (--smooth).
     sharp_angle: normal deviation in degrees (0, 90) above which an edge is a sharp crease
         (--sharp-angle); None: DEFAULT_OPTIONS["sharp_angle"], or ["smooth_sharp_angle"] when smooth.
     max_size: largest ball radius and cell size, None for no bound (--max-size).

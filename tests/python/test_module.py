@@ -225,6 +225,12 @@ class Module(unittest.TestCase):
         # An explicit angle wins over the mode's.
         self.assertEqual(vorocrust.mesh(bimba, smooth=True, sharp_angle=45, stop_after="balls")
                          .report()["options"]["sharp_angle_degrees"], 45)
+        # Features are found after smoothing: with none, the folds of the coarse mesh are creases,
+        # as by the default rules, and the refinement ends as it does with them.
+        unsmoothed = vorocrust.mesh(bimba, smooth=True, smoothing_iterations=0, stop_after="balls").report()
+        rules = vorocrust.mesh(bimba, sharp_angle=60, stop_after="balls").report()
+        self.assertGreater(rules["features"]["corners"], 0)
+        self.assertEqual(unsmoothed["features"], rules["features"])
 
     def test_an_open_sheet_meshes_in_the_box_given(self):
         # A square sheet across the middle of the unit cube: one material on both sides.

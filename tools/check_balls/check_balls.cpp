@@ -259,7 +259,7 @@ BallCheckReport check_balls(const SurfaceMesh& mesh, const std::vector<CheckedBa
   report.diagonal = (high - low).norm();
   const double tolerance = kRelative * report.diagonal;
 
-  const Strata strata = find_strata(mesh, theta, options.smooth);
+  const Strata strata = find_strata(mesh, theta);
   report.corners = strata.num_corners();
   report.creases = strata.num_creases();
   report.patches = strata.num_patches;

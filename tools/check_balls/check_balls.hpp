@@ -53,7 +53,6 @@ void write_balls_csv(const std::filesystem::path& path, const std::vector<Checke
 
 struct BallCheckOptions {
   double sharp_angle_degrees = 30;  // theta; the CLI takes its default from MeshOptions
-  bool smooth = false;              // the surface is smooth: sharp edges only where not two faces meet
   double lipschitz = 0.25;          // L
   std::size_t face_samples = 200000;  // random points on faces, proportional to area
   std::size_t crease_samples = 50000; // random points on sharp edges, proportional to length

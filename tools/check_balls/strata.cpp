@@ -68,16 +68,15 @@ void build_topology(const SurfaceMesh& mesh, Strata& s) {
   for (auto& faces : s.vertex_faces) sort_unique(faces);
 }
 
-void find_sharp_edges(Strata& s, double theta, bool smooth) {
+void find_sharp_edges(Strata& s, double theta) {
   s.sharp.resize(s.edges.size());
   for (std::size_t e = 0; e < s.edges.size(); ++e) {
     const auto& faces = s.edges[e].faces;
-    s.sharp[e] = faces.size() != 2 ||
-                 (!smooth && angle_between(s.face_normal[faces[0]], s.face_normal[faces[1]]) > theta);
+    s.sharp[e] = faces.size() != 2 || angle_between(s.face_normal[faces[0]], s.face_normal[faces[1]]) > theta;
   }
 }
 
-bool is_corner(const SurfaceMesh& mesh, const Strata& s, Index v, double theta, bool smooth) {
+bool is_corner(const SurfaceMesh& mesh, const Strata& s, Index v, double theta) {
   std::vector<Index> sharp_edges;
   for (Index e : s.vertex_edges[v]) {
     if (s.sharp[e]) sharp_edges.push_back(e);
@@ -90,8 +89,7 @@ bool is_corner(const SurfaceMesh& mesh, const Strata& s, Index v, double theta, 
     if (angle_between(a - p, p - b) > theta) return true;
   }
   // Sectors: the faces around v joined through its non-sharp edges. A sector whose faces turn by
-  // theta or more has no single tangent plane at v, unless the surface is taken as smooth.
-  if (smooth) return false;
+  // theta or more has no single tangent plane at v.
   const auto& faces = s.vertex_faces[v];
   DisjointSets sectors(faces.size());
   auto local = [&](Index f) {
@@ -111,11 +109,11 @@ bool is_corner(const SurfaceMesh& mesh, const Strata& s, Index v, double theta, 
   return false;
 }
 
-void find_corners(const SurfaceMesh& mesh, Strata& s, double theta, bool smooth) {
+void find_corners(const SurfaceMesh& mesh, Strata& s, double theta) {
   s.vertex_corner.assign(mesh.num_vertices(), kNone);
   for (Index v = 0; v < mesh.num_vertices(); ++v) {
     if (s.vertex_faces[v].empty()) continue;  // not on the surface
-    if (is_corner(mesh, s, v, theta, smooth)) {
+    if (is_corner(mesh, s, v, theta)) {
       s.vertex_corner[v] = static_cast<Index>(s.corner_vertex.size());
       s.corner_vertex.push_back(v);
     }
@@ -243,11 +241,11 @@ bool Strata::incident(StratumRef higher, StratumRef lower) const {
   return std::binary_search(list->begin(), list->end(), lower.index);
 }
 
-Strata find_strata(const SurfaceMesh& mesh, double sharp_angle_radians, bool smooth) {
+Strata find_strata(const SurfaceMesh& mesh, double sharp_angle_radians) {
   Strata s;
   build_topology(mesh, s);
-  find_sharp_edges(s, sharp_angle_radians, smooth);
-  find_corners(mesh, s, sharp_angle_radians, smooth);
+  find_sharp_edges(s, sharp_angle_radians);
+  find_corners(mesh, s, sharp_angle_radians);
   find_creases(mesh, s);
   find_patches(mesh, s);
   return s;

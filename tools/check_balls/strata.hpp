@@ -64,7 +64,6 @@ struct Strata {
 // The angle in [0, pi] between two vectors; 0 when either is zero.
 double angle_between(const Point& u, const Point& v);
 
-// smooth: only edges with other than two faces are sharp, and no corner comes from a sector.
-Strata find_strata(const SurfaceMesh& mesh, double sharp_angle_radians, bool smooth = false);
+Strata find_strata(const SurfaceMesh& mesh, double sharp_angle_radians);
 
 }  // namespace vorocrust::checker

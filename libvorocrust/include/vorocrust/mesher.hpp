@@ -51,9 +51,10 @@ const char* to_string(SelfIntersections mode) noexcept;
 
 struct MeshOptions {
   double lipschitz = 0.25;  // L < 1: how fast ball radii may vary
-  // The input approximates a smooth surface (a scan, a coarse tessellation of a curved shape):
-  // no edge is a crease for the angle its faces make, only boundary and non-manifold edges are
-  // sharp, and unless told otherwise theta# is 60 degrees and the patches take 6 rounds of Loop
+  // The input approximates a smooth surface (a scan, a coarse tessellation of a curved shape): it
+  // is smoothed as one patch (only boundary and non-manifold edges stay fixed), and its features
+  // are found afterwards, on the smoothed surface, so the folds of its tessellation are not
+  // creases. Unless told otherwise theta# is 60 degrees and smoothing takes 6 rounds of Loop
   // subdivision, the paper's settings for smooth models. On igl_bunny this takes the surface's
   // smallest angle from 0.9 to 23 degrees: the creases the default rules find on a decimated scan
   // are not the shape's and pinch the balls around them.

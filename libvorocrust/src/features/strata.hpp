@@ -47,8 +47,8 @@ struct Strata {
 
 // Which edges may be sharp. A scan or a coarse tessellation of a curved shape bends by more than
 // theta# between neighbouring faces without having a crease there (igl_bunny: 59 edges past 60
-// degrees): as a smooth surface its only features are its boundary and non-manifold edges, with
-// the corners where those end, branch or turn by more than theta#.
+// degrees): smoothed as a smooth surface, its only fixed features are its boundary and
+// non-manifold edges, with the corners where those end, branch or turn by more than theta#.
 enum class FeatureDetection {
   SharpAndBoundary,  // the paper's rules: edges bent past theta#, sectors spread by theta#, and the boundary
   BoundaryOnly,      // the surface is smooth: nothing is sharp for its angle

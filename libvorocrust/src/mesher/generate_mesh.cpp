@@ -98,12 +98,10 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
       options.smooth ? FeatureDetection::BoundaryOnly : FeatureDetection::SharpAndBoundary;
   if (progress && !progress({"features", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
 
-  // Features (paper 2.2).
+  // Features (paper 2.2). A smooth surface is smoothed before its features are found: what its
+  // tessellation bends is then gone, and a fold that still bends past theta# is a crease after
+  // all (without one, balls either side of it are not co-smooth and shrink without end).
   Strata strata = clock("features", [&] { return detect_strata(input, sharp_angle, detection); });
-  for (bool sharp : strata.sharp_edge) result.features.sharp_edges += sharp;
-  result.features.corners = strata.corners.size();
-  result.features.creases = strata.creases.size();
-  result.features.patches = strata.num_patches;
 
   // Patch smoothing (paper 2.2): flatten the patches so nearby normals agree, features untouched.
   result.smoothed_input = input;
@@ -132,6 +130,13 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
       return 0;
     });
   }
+  if (options.smooth) {
+    strata = clock("features", [&] { return detect_strata(result.smoothed_input, sharp_angle); });
+  }
+  for (bool sharp : strata.sharp_edge) result.features.sharp_edges += sharp;
+  result.features.corners = strata.corners.size();
+  result.features.creases = strata.creases.size();
+  result.features.patches = strata.num_patches;
   result.features.faces_after_smoothing = result.smoothed_input.num_faces();
   const SurfaceMesh& surface = result.smoothed_input;
 
