@@ -93,6 +93,20 @@ def main():
     check(panel.cvt_iterations.isEnabled(), "CVT iterations not offered for the cvt interior")
     panel.interior.setCurrentText("random")
 
+    # "Smooth surface" moves the sharp angle to the paper's for smooth models and back, and leaves
+    # an angle the user chose alone.
+    check(not panel.smooth.isChecked() and panel.sharp_angle.value() == 30, "smooth %r, angle %r" % (
+        panel.smooth.isChecked(), panel.sharp_angle.value()))
+    panel.smooth.setChecked(True)
+    check(panel.sharp_angle.value() == 60 and panel.parameters().smooth, "smooth: angle %r" % panel.sharp_angle.value())
+    panel.smooth.setChecked(False)
+    check(panel.sharp_angle.value() == 30, "not smooth: angle %r" % panel.sharp_angle.value())
+    panel.sharp_angle.setValue(40)
+    panel.smooth.setChecked(True)
+    check(panel.sharp_angle.value() == 40, "the chosen angle changed to %r" % panel.sharp_angle.value())
+    panel.smooth.setChecked(False)
+    panel.sharp_angle.setValue(30)
+
     # Cancel during a run: it stops, nothing is written, the panel stays open for another try.
     ok, cancel = task_buttons()
     ok.click()
