@@ -7,7 +7,8 @@
 namespace vorocrust::python {
 namespace {
 
-constexpr SeedKind kSeedKinds[] = {SeedKind::Surface, SeedKind::Interior, SeedKind::Outside, SeedKind::Cap};
+constexpr SeedKind kSeedKinds[] = {SeedKind::Surface, SeedKind::Interior, SeedKind::Outside, SeedKind::Cap,
+                                   SeedKind::Repair};
 constexpr StratumType kStratumTypes[] = {StratumType::Corner, StratumType::Crease, StratumType::Patch};
 
 SeedKind seed_kind(const std::string& name) {
@@ -65,7 +66,7 @@ Voronoi seeds with their labels: the whole mesh in compact form (the cells follo
 
 Seeds(positions, labels, radii=None, kinds=None) builds a set from an n x 3 array of
 positions and n integer labels (regions: 0 is outside, 1, 2, ... are materials); radii default
-to 0, kinds ("surface", "interior", "outside", "cap") to "outside" for label 0 and "interior" else.
+to 0, kinds ("surface", "interior", "outside", "cap", "repair") to "outside" for label 0 and "interior" else.
 Arrays are read-only copies; a Seeds never changes once made.
 )doc")
       .def(py::init(&seeds_from_arrays), py::arg("positions"), py::arg("labels"), py::arg("radii") = py::none(),

@@ -51,7 +51,7 @@ TEST(ReadSeeds, BrokenFilesNameFileAndLine) {
       {header + "1,2,3,1.5,0.5,interior\n", 2, "label is not a 32-bit integer: '1.5'"},
       {header + "1,2,3,99999999999,0.5,interior\n", 2, "label is not a 32-bit integer"},
       {header + "1,2,3,1,-1,interior\n", 2, "radius is not a finite number >= 0"},
-      {header + good + good + "1,2,3,1,0.5,inside\n", 4, "kind is not surface, interior, outside or cap: 'inside'"},
+      {header + good + good + "1,2,3,1,0.5,inside\n", 4, "kind is not surface, interior, outside, cap or repair: 'inside'"},
   };
   int k = 0;
   for (const auto& c : cases) {

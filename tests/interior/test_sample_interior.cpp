@@ -55,7 +55,7 @@ void expect_surface_untouched(const MeshResult& r) {
       const double d = (z - b.center).norm();
       ASSERT_GE(d, b.radius * (1 - 1e-12)) << "seed " << i << " inside a protecting ball";
       on_a_sphere = on_a_sphere || d <= b.radius * (1 + 1e-12);
-      if (r.seeds[i].kind != SeedKind::Cap) {
+      if (r.seeds[i].kind != SeedKind::Cap && r.seeds[i].kind != SeedKind::Repair) {
         ASSERT_GE(d, b.radius * (1 + kBallClearance)) << "seed " << i << " within the clearance of a ball";
       }
     }
@@ -63,6 +63,7 @@ void expect_surface_untouched(const MeshResult& r) {
       EXPECT_TRUE(on_a_sphere) << "cap seed " << i << " on no ball's sphere";
       continue;
     }
+    if (r.seeds[i].kind == SeedKind::Repair) continue;  // placed, split off a cell: outside the balls only
     for (std::size_t s = 0; s < first; ++s) {
       ASSERT_GE((z - r.seeds[s].position).norm(), r.seeds[s].radius) << "seed " << i << " inside surface seed " << s;
     }
@@ -95,8 +96,9 @@ TEST(SampleInterior, RandomSeedsStayOutOfEveryBallAndKeepTheSurface) {
   EXPECT_GT(r.interior.interior_seeds, 100u);
   EXPECT_GT(r.interior.outside_seeds, 100u);
   EXPECT_GT(r.interior.cap_seeds, 100u);
-  EXPECT_EQ(r.interior.interior_seeds + r.interior.outside_seeds + r.interior.cap_seeds,
+  EXPECT_EQ(r.interior.interior_seeds + r.interior.outside_seeds + r.interior.cap_seeds + r.interior.split_seeds,
             r.seeds.size() - first_interior(r));
+  EXPECT_LE(r.interior.split_seeds, r.interior.repair_seeds);
   expect_surface_untouched(r);
   expect_bounded_by_the_surface(r);
 }
@@ -105,9 +107,10 @@ TEST(SampleInterior, RadiiAreLipschitzAndSeedsOutsideEachOthersBalls) {
   const MeshResult& r = run(InteriorMode::Random);
   const double L = MeshOptions{}.lipschitz;
   for (std::size_t i = first_interior(r); i < r.seeds.size(); ++i) {
-    if (r.seeds[i].kind == SeedKind::Cap) continue;  // placed on spheres, not sampled
+    const auto placed = [&](std::size_t k) { return r.seeds[k].kind == SeedKind::Cap || r.seeds[k].kind == SeedKind::Repair; };
+    if (placed(i)) continue;  // on spheres or splitting cells, not sampled
     for (std::size_t j = 0; j < r.seeds.size(); ++j) {
-      if (i == j || r.seeds[j].kind == SeedKind::Cap) continue;
+      if (i == j || placed(j)) continue;
       const double d = (r.seeds[i].position - r.seeds[j].position).norm();
       ASSERT_LE(r.seeds[i].radius, r.seeds[j].radius + L * d + 1e-12) << i << " " << j;
       if (j < i && r.seeds[j].kind != SeedKind::Surface) {

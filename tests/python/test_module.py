@@ -333,7 +333,9 @@ class Module(unittest.TestCase):
                 # The arrays: a cell per material seed, interior and outside seeds after the surface seeds.
                 seeds, cells = result.seeds, result.cells
                 kinds = list(seeds.kinds)
-                self.assertEqual(set(kinds), {"surface", "interior", "outside", "cap"})
+                self.assertLessEqual({"surface", "interior", "outside", "cap"}, set(kinds))
+                self.assertLessEqual(set(kinds), {"surface", "interior", "outside", "cap", "repair"})
+                self.assertEqual(kinds.count("repair"), report["interior"]["split_seeds"])
                 surface_seeds = kinds.count("surface")
                 self.assertEqual(kinds[:surface_seeds], ["surface"] * surface_seeds)  # surface seeds first
                 self.assertEqual(cells.num_cells, int((seeds.labels > 0).sum()))

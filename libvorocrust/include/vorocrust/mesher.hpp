@@ -142,7 +142,8 @@ struct InteriorStats {
   std::size_t interior_seeds = 0;  // seeds inside a material, away from the surface
   std::size_t outside_seeds = 0;   // seeds outside every material, bounding the boundary cells
   std::size_t cap_seeds = 0;       // seeds on protecting spheres (poles and skew repairs), SeedKind::Cap
-  std::size_t repair_seeds = 0;    // of them, placed to remove highly skew faces after the cells
+  std::size_t split_seeds = 0;     // seeds splitting a cell about a highly skew face, SeedKind::Repair
+  std::size_t repair_seeds = 0;    // placed to remove highly skew faces after the cells: caps and splits
   int repair_rounds = 0;           // rounds of those repairs (each computing the cells again)
   std::size_t darts = 0;           // seeds from dart throwing
   std::size_t spokes = 0;          // spokes shot

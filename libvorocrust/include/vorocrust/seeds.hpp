@@ -17,8 +17,10 @@ namespace vorocrust {
 
 // Surface: a seed of a pair across the surface (paper 2.4). Interior, Outside: a seed away from
 // the surface (2.5) in a material or outside. Cap: a seed on one protecting ball's sphere that
-// keeps the cells about the ball's centre well shaped (interior/cap_seeds.hpp).
-enum class SeedKind : std::uint8_t { Surface, Interior, Outside, Cap };
+// keeps the cells about the ball's centre well shaped (interior/cap_seeds.hpp). Repair: a seed
+// placed, off the spheres, to split a cell about a highly skew face; like caps, it is placed
+// rather than sampled, so the sampler's rules (clearance, Lipschitz radii) do not bind it.
+enum class SeedKind : std::uint8_t { Surface, Interior, Outside, Cap, Repair };
 
 const char* to_string(SeedKind kind) noexcept;
 

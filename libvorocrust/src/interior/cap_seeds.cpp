@@ -171,7 +171,7 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
           place.near_placed(*p)) {
         return false;
       }
-      Seed seed{*p, region, reach, SeedKind::Interior};
+      Seed seed{*p, region, reach, SeedKind::Repair};
       place.remember(seed);
       added.push_back(seed);
       return true;

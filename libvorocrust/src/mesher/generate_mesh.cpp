@@ -231,6 +231,7 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
     if (s.kind == SeedKind::Outside) ++result.interior.outside_seeds;
     if (s.kind == SeedKind::Interior) ++result.interior.interior_seeds;
     if (s.kind == SeedKind::Cap) ++result.interior.cap_seeds;
+    if (s.kind == SeedKind::Repair) ++result.interior.split_seeds;
   }
   result.cells.region_names = result.surface.region_names;
   if (progress && !progress({"cell quality", -1})) throw Error(Error::Kind::Cancelled, "cancelled");

@@ -276,7 +276,8 @@ std::string run_report_json(const RunReport& report, int indent) {
                        {"spoke_seeds", i.spoke_seeds},       {"lattice_seeds", i.lattice_seeds},
                        {"lipschitz_shrinks", i.lipschitz_shrinks}, {"rounds", i.rounds},
                        {"cvt_iterations", i.cvt_iterations}, {"cvt_last_move", i.cvt_last_move},
-                       {"cap_seeds", i.cap_seeds},           {"repair_seeds", i.repair_seeds},
+                       {"cap_seeds", i.cap_seeds},           {"split_seeds", i.split_seeds},
+                       {"repair_seeds", i.repair_seeds},
                        {"repair_rounds", i.repair_rounds}};
     doc["cells"] = cells_object(m.cells, m.cell_quality ? &*m.cell_quality : nullptr);
   }

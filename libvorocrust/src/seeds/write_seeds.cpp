@@ -12,6 +12,7 @@ const char* to_string(SeedKind kind) noexcept {
     case SeedKind::Interior: return "interior";
     case SeedKind::Outside: return "outside";
     case SeedKind::Cap: return "cap";
+    case SeedKind::Repair: return "repair";
   }
   return "?";
 }
