@@ -105,12 +105,20 @@ class InteriorSampler {
   // Spoke darts from every seed, in order, each until `misses` spokes in a row find no room.
   // The balls that can reach a seed's spokes are gathered once per seed; seeds its own spokes
   // place join them.
+  // A direction uniform on the unit sphere (Archimedes: the height is uniform in [-1, 1]), from
+  // two uniform numbers; three normal deviates cost twice as much, a tenth of the sampler.
+  Point random_direction(std::uniform_real_distribution<double>& unit) {
+    const double z = 2 * unit(rng_) - 1;
+    const double phi = 2 * std::numbers::pi * unit(rng_);
+    const double s = std::sqrt(std::max(0.0, 1 - z * z));
+    return {s * std::cos(phi), s * std::sin(phi), z};
+  }
+
   void shoot_spokes() {
     ++stats_.rounds;
     std::deque<std::uint32_t> queue;
     // The given seeds lie on the protecting spheres, where spokes find no room.
     for (std::uint32_t i = given_; i < seeds_.size(); ++i) queue.push_back(i);
-    std::normal_distribution<double> normal(0.0, 1.0);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<BallTree::Sphere> near;
     std::size_t popped = 0;
@@ -126,10 +134,7 @@ class InteriorSampler {
       order_nearest_first(z, near);
       for (int misses = 0; misses < options_.misses;) {
         ++stats_.spokes;
-        Point direction(normal(rng_), normal(rng_), normal(rng_));
-        const double norm = direction.norm();
-        if (!(norm > 0)) continue;
-        direction /= norm;
+        const Point direction = random_direction(unit);
         const std::optional<double> t = uncovered_point(z, direction, r, 2 * r, unit(rng_), near);
         std::optional<Seed> seed;
         if (t) seed = admit(z + *t * direction);
