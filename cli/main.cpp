@@ -111,8 +111,8 @@ int main(int argc, char** argv) {
                       "against the smoothed_surface.ply it wrote");
   check_cmd->add_option_function<double>(
       "--sharp-angle", [&](double degrees) { check.sharp_angle_degrees = degrees; },
-                        "Normal deviation in degrees (0,90) above which an edge is sharp; use the mesh's value "
-                        "(default 30, or 60 with --smooth)");
+      "Normal deviation in degrees (0,90) above which an edge is sharp; use the mesh's value (default 30, or 60 "
+      "with --smooth)");
   check_cmd->add_option("--lipschitz", check.lipschitz, "L in (0,1) for condition C3; use the mesh's value")
       ->capture_default_str();
   check_cmd->add_option("--samples", check.face_samples, "Random sample points on faces, proportional to area")

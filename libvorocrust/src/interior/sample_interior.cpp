@@ -102,9 +102,6 @@ class InteriorSampler {
     }
   }
 
-  // Spoke darts from every seed, in order, each until `misses` spokes in a row find no room.
-  // The balls that can reach a seed's spokes are gathered once per seed; seeds its own spokes
-  // place join them.
   // A direction uniform on the unit sphere (Archimedes: the height is uniform in [-1, 1]), from
   // two uniform numbers; three normal deviates cost twice as much, a tenth of the sampler.
   Point random_direction(std::uniform_real_distribution<double>& unit) {
@@ -114,6 +111,9 @@ class InteriorSampler {
     return {s * std::cos(phi), s * std::sin(phi), z};
   }
 
+  // Spoke darts from every seed, in order, each until `misses` spokes in a row find no room.
+  // The balls that can reach a seed's spokes are gathered once per seed; seeds its own spokes
+  // place join them.
   void shoot_spokes() {
     ++stats_.rounds;
     std::deque<std::uint32_t> queue;

@@ -111,16 +111,20 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
       // Smoothing must flatten patches, not make features: when the smoothed surface, detected
       // afresh, has sharp edges or corners the carried-through features lack (a cone point
       // appears beside a corner on cgal_fandisk), the run takes one round fewer, down to none.
+      // A smooth surface's features before smoothing are its topology's, which subdivision
+      // keeps: detected afresh they are the carried ones, so they are not detected again.
       for (int rounds = options.smoothing_rounds(); rounds > 0; --rounds) {
         SmoothingOptions smoothing;
         smoothing.max_iterations = rounds;
         SmoothedSurface smoothed = smooth_patches(input, strata, smoothing);
         if (smoothed.iterations == 0) break;
         Strata carried = strata_after_smoothing(smoothed);
-        const Strata fresh = detect_strata(smoothed.mesh, sharp_angle, detection);
-        if (fresh.sharp_edge != carried.sharp_edge || fresh.corners != carried.corners) {
-          result.features.smoothing_rounds_refused = rounds;
-          continue;
+        if (!options.smooth) {
+          const Strata fresh = detect_strata(smoothed.mesh, sharp_angle);
+          if (fresh.sharp_edge != carried.sharp_edge || fresh.corners != carried.corners) {
+            result.features.smoothing_rounds_refused = rounds;
+            continue;
+          }
         }
         result.features.smoothing_iterations = smoothed.iterations;
         strata = std::move(carried);
@@ -202,9 +206,9 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
     return cells->skew_faces(kHighSkewness);
   });
   // Faces still highly skew get a seed on a sphere, at the face or in a cell that it splits, and
-  // the cells about the new seeds are cut again (interior/cap_seeds.hpp). A repair seed in a thin wedge between
-  // crossing surfaces can make a skew face beside the one it removes, so rounds go on while the
-  // count falls: two rounds without a fall, or a round with no seed to place, end it.
+  // the cells about the new seeds are cut again (interior/cap_seeds.hpp). A repair seed in a thin
+  // wedge between crossing surfaces can make a skew face beside the one it removes, so rounds go
+  // on while the count falls: two rounds without a fall, or a round with no seed to place, end it.
   constexpr int kRepairRounds = 24;
   std::size_t fewest_skew = skew.size();
   for (int round = 0, stalled = 0; round < kRepairRounds && stalled < 2 && fewest_skew > 0; ++round) {
