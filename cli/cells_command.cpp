@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "cell_figures.hpp"
 #include "exit_codes.hpp"
 #include "volume_outputs.hpp"
 #include "vorocrust/vorocrust.hpp"
@@ -71,6 +72,7 @@ int run_cells(const CellsArgs& args) {
     std::printf("aspect ratio %.4g min, %.4g mean, %.4g max (cell %zu, seed %u); %zu cells above %.4g; in %.3f s\n",
                 quality.min_aspect_ratio, quality.mean_aspect_ratio, quality.max_aspect_ratio, quality.worst_cell,
                 quality.worst_seed, quality.aspect_ratio_above_high, quality.histogram_high, quality_seconds);
+    print_face_figures(quality, stdout);
     print_volume_outputs(out, args.formats, stdout);
     std::printf("wrote %s, %s and %s\n", (out / "seeds.csv").c_str(), (out / "report.json").c_str(),
                 (out / "quality.svg").c_str());

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 
+#include "cell_figures.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "progress_display.hpp"
@@ -137,6 +138,7 @@ int run_mesh(const MeshArgs& args) {
       const CellQuality& q = *result->cell_quality;
       std::fprintf(stderr, "vorocrust: cell aspect ratio %.3g mean, %.3g max (seed %u); %zu cells above %.3g\n",
                    q.mean_aspect_ratio, q.max_aspect_ratio, q.worst_seed, q.aspect_ratio_above_high, q.histogram_high);
+      print_face_figures(q, stderr);
       print_volume_outputs(out, args.formats);
     }
     return finish("ok", "", kOk);

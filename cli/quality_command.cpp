@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "cell_figures.hpp"
 #include "exit_codes.hpp"
 #include "vorocrust/vorocrust.hpp"
 
@@ -79,6 +80,7 @@ void print_cell_table(const CellQuality& q, const fs::path& seeds, std::size_t s
   std::printf("faces per cell      min %zu, mean %.2f, max %zu\n", q.min_faces, q.mean_faces, q.max_faces);
   std::printf("shortest edge       min %.4g, mean %.4g of the cube root of the cell volume (cell %zu)\n",
               q.min_shortest_edge_relative, q.mean_shortest_edge_relative, q.shortest_edge_cell);
+  print_face_figures(q, stdout);
 }
 
 // The cells of OUTDIR/seeds.csv, rebuilt (compute_cells is deterministic, so they are the cells the

@@ -1,5 +1,6 @@
 """The volume mesh as outside tools read it (VTK's reader, OpenFOAM's checkMesh), shared by the
 Python tests."""
+import math
 import os
 import re
 import shutil
@@ -72,3 +73,47 @@ def obj_enclosed_volume(path):
         volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
                    + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6
     return abs(volume)
+
+
+def read_seed_positions(path):
+    """The seeds of a seeds.csv, as (x, y, z) tuples in file order."""
+    with open(path) as f:
+        return [tuple(float(x) for x in line.split(",")[:3]) for line in f.readlines()[1:]]
+
+
+def vtk_link_angles(grid, seeds):
+    """For every face VTK's reader gives two cells of `grid`, the angle in degrees between the
+    face's normal (Newell's, from the points as read) and the link between the two cells' seeds
+    (the grid's `seed` cell array, indexing `seeds`). Returns the largest angle and the number of
+    such faces."""
+    points = grid.GetPoints()
+    seed_of = cell_array(grid, "seed")
+    first_cell = {}
+    largest, shared = 0.0, 0
+    for cell in range(grid.GetNumberOfCells()):
+        for face in polyhedron_faces(grid, cell):
+            key = tuple(sorted(face))
+            other = first_cell.pop(key, None)
+            if other is None:
+                first_cell[key] = cell
+                continue
+            shared += 1
+            coords = [points.GetPoint(p) for p in face]
+            normal = [0.0, 0.0, 0.0]
+            for k, a in enumerate(coords):
+                b = coords[(k + 1) % len(coords)]
+                normal[0] += (a[1] - b[1]) * (a[2] + b[2])
+                normal[1] += (a[2] - b[2]) * (a[0] + b[0])
+                normal[2] += (a[0] - b[0]) * (a[1] + b[1])
+            s, t = seeds[seed_of[other]], seeds[seed_of[cell]]
+            link = [t[i] - s[i] for i in range(3)]
+            n_len = math.sqrt(sum(x * x for x in normal))
+            l_len = math.sqrt(sum(x * x for x in link))
+            if n_len == 0 or l_len == 0:
+                continue
+            cross = (normal[1] * link[2] - normal[2] * link[1], normal[2] * link[0] - normal[0] * link[2],
+                     normal[0] * link[1] - normal[1] * link[0])
+            # The face's orientation in either cell is its own business: the angle to the line.
+            angle = math.degrees(math.atan2(math.sqrt(sum(x * x for x in cross)), abs(sum(normal[i] * link[i] for i in range(3)))))
+            largest = max(largest, angle)
+    return largest, shared

@@ -20,7 +20,8 @@ import xml.etree.ElementTree as ElementTree
 import vtk
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from volume_mesh import check_mesh, cell_array, obj_enclosed_volume, read_vtu, vtk_boundary_volume, vtk_cell_volumes  # noqa: E402
+from volume_mesh import (check_mesh, cell_array, obj_enclosed_volume, read_seed_positions, read_vtu,  # noqa: E402
+                         vtk_boundary_volume, vtk_cell_volumes, vtk_link_angles)
 
 BINARY, MODELS = sys.argv[1:3]
 del sys.argv[1:3]
@@ -156,6 +157,10 @@ class Cells(unittest.TestCase):
         cells = sum(1 for lab in labels if lab)
         self.assertRegex(summary, r"\naspect ratio 1\.732 min, 1\.732 mean, 1\.732 max \(cell \d+, seed \d+\); "
                                   r"0 cells above 5; in ")
+        # Cubes: every face orthogonal to the links between both seeds and centroids.
+        self.assertRegex(summary, r"\nfaces orthogonal to their seed links within 0 deg \(face \d+\); against the cell "
+                                  r"centroids, as checkMesh measures: non-orthogonality max 0 deg, mean 0 deg, "
+                                  r"skewness max (0|\d\.?\d*e-1\d), 0 faces above 4\n")  # skewness from rounding
         with open(self.path("out", "report.json")) as f:
             doc = json.load(f)
         self.assertEqual(doc["status"], "ok")
@@ -276,8 +281,17 @@ class MeshRuns(unittest.TestCase):
             self.assertTrue(a.read() == b.read(), "rebuilt mesh.vtu differs")
         # The run's report measures every cell (paper section 3): its figures are the cells'.
         with open(os.path.join(out, "report.json")) as f:
-            quality = json.load(f)["cells"]["quality"]
+            report = json.load(f)
+        quality = report["cells"]["quality"]
         self.assertEqual(quality["cells"], material)
+        # Its faces are orthogonal to their seed links, in the mesh.vtu VTK reads too; against the
+        # centroids, its figures are checkMesh's.
+        largest, shared = vtk_link_angles(grid, read_seed_positions(os.path.join(out, "seeds.csv")))
+        self.assertEqual(shared, report["cells"]["interior_faces"])
+        self.assertLess(largest, 1e-6)
+        self.assertLess(quality["link_angle"]["max"], 1e-6)
+        self.assertAlmostEqual(quality["non_orthogonality"]["max"], angles[0], delta=1e-6 * angles[0])
+        self.assertAlmostEqual(quality["non_orthogonality"]["mean"], angles[1], delta=1e-6 * angles[1])
         ratio = quality["aspect_ratio"]
         self.assertLessEqual(1.0, ratio["min"])
         self.assertLessEqual(ratio["min"], ratio["mean"])

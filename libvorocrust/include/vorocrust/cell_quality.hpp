@@ -12,7 +12,10 @@
 // - shortest edge relative to the cell's size: the shortest edge of its faces divided by the
 //   cube root of its volume, 1 for a cube, so a short edge reads the same in a large cell and a
 //   small one.
-// Per face: skewness, as OpenFOAM's checkMesh measures it (face_skewness.hpp).
+// Per face with a cell on each side: the angle between its normal and the link between the two
+// seeds (face_orthogonality.hpp; 0 for Voronoi cells up to rounding) and, as OpenFOAM's checkMesh
+// measures them, the angle to the link between the cells' centroids (its "non-orthogonality")
+// and skewness (face_skewness.hpp).
 // The sphere and the ball are computed in a frame where the cell has unit size, so their
 // tolerances are relative; the enclosing sphere is grown to its farthest point and the ball
 // shrunk to its nearest face plane, so the sphere always encloses and the ball always fits: the
@@ -78,6 +81,13 @@ struct CellQuality {
   double max_skewness = 0;
   std::size_t most_skew_face = 0;
   std::size_t highly_skew_faces = 0;
+
+  // Degrees, over the faces with a cell on each side (face_orthogonality.hpp): the largest angle
+  // between a face and its seeds' link, and its face; checkMesh's non-orthogonality, largest and
+  // mean (as checkMesh averages: the angle whose cosine is the faces' mean cosine).
+  double max_link_angle = 0;
+  std::size_t link_angle_face = 0;
+  double max_non_orthogonality = 0, mean_non_orthogonality = 0;
 };
 
 CellQuality measure_cell_quality(const VoronoiMesh& mesh, const CellQualityOptions& options = {});

@@ -5,6 +5,7 @@
 #include "vorocrust/cell_quality.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
+#include "vorocrust/face_orthogonality.hpp"
 #include "vorocrust/face_skewness.hpp"
 #include "vorocrust/merge_surfaces.hpp"
 #include "vorocrust/mesh_info.hpp"

@@ -7,11 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 
+#include "quality/face_figures.hpp"
 #include "quality/spheres.hpp"
 #include "vorocrust/cell_quality.hpp"
-
 #include "vorocrust/face_skewness.hpp"
 #include "vorocrust/error.hpp"
 
@@ -165,14 +166,33 @@ CellQuality measure_cell_quality(const VoronoiMesh& mesh, const CellQualityOptio
                       [&](std::size_t c) { q.cells[c] = measure_cell(mesh, mesh.cells[c]); });
   });
   summarise(mesh, options, q);
-  std::vector<double> skewness(mesh.faces.size());
+  struct FaceFigures {
+    double skewness = 0, link_angle = 0, non_orthogonality = 0;
+  };
+  std::vector<FaceFigures> faces(mesh.faces.size());
   arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, mesh.faces.size(), [&](std::size_t f) { skewness[f] = face_skewness(mesh, f); });
+    tbb::parallel_for(std::size_t{0}, mesh.faces.size(), [&](std::size_t f) {
+      // The face's geometry once for its three figures.
+      const VoronoiFace& face = mesh.faces[f];
+      const FaceGeometry g = face_geometry(mesh, f);
+      faces[f].skewness = quality::face_skewness(mesh, f, g);
+      if (face.neighbour == kNoCell) return;
+      const VoronoiCell &owner = mesh.cells[face.owner], &neighbour = mesh.cells[face.neighbour];
+      faces[f].link_angle = quality::angle_to_link(g.normal, owner.site, neighbour.site);
+      faces[f].non_orthogonality = quality::angle_to_link(g.normal, owner.centroid, neighbour.centroid);
+    });
   });
-  for (std::size_t f = 0; f < skewness.size(); ++f) {
-    if (skewness[f] > q.max_skewness) q.max_skewness = skewness[f], q.most_skew_face = f;
-    q.highly_skew_faces += skewness[f] > kHighSkewness;
+  double cosine_sum = 0;  // checkMesh's mean is the angle of the mean cosine
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (faces[f].skewness > q.max_skewness) q.max_skewness = faces[f].skewness, q.most_skew_face = f;
+    q.highly_skew_faces += faces[f].skewness > kHighSkewness;
+    if (faces[f].link_angle > q.max_link_angle) q.max_link_angle = faces[f].link_angle, q.link_angle_face = f;
+    q.max_non_orthogonality = std::max(q.max_non_orthogonality, faces[f].non_orthogonality);
+    if (mesh.faces[f].neighbour != kNoCell) cosine_sum += std::cos(faces[f].non_orthogonality * std::numbers::pi / 180);
   }
+  const std::size_t interior = count_interior_faces(mesh);
+  const double mean_cosine = interior > 0 ? cosine_sum / static_cast<double>(interior) : 1;
+  q.mean_non_orthogonality = std::acos(std::clamp(mean_cosine, -1.0, 1.0)) * 180 / std::numbers::pi;
   return q;
 }
 

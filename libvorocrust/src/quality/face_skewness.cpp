@@ -6,16 +6,20 @@
 #include <tbb/parallel_for.h>
 
 #include "cells/polygon_measures.hpp"
+#include "quality/face_figures.hpp"
 
 namespace vorocrust {
 
-double face_skewness(const VoronoiMesh& mesh, std::size_t face) {
+double quality::face_skewness(const VoronoiMesh& mesh, std::size_t face, const FaceGeometry& g) {
   const VoronoiFace& f = mesh.faces[face];
   const auto at = [&](std::size_t k) -> const Point& { return mesh.points[f.points[k]]; };
   const std::optional<Point> neighbour =
       f.neighbour != kNoCell ? std::optional<Point>(mesh.cells[f.neighbour].centroid) : std::nullopt;
-  return cells::polygon_skewness(f.points.size(), at, face_geometry(mesh, face), mesh.cells[f.owner].centroid,
-                                 neighbour);
+  return cells::polygon_skewness(f.points.size(), at, g, mesh.cells[f.owner].centroid, neighbour);
+}
+
+double face_skewness(const VoronoiMesh& mesh, std::size_t face) {
+  return quality::face_skewness(mesh, face, face_geometry(mesh, face));
 }
 
 std::vector<std::size_t> skew_faces(const VoronoiMesh& mesh, double threshold) {

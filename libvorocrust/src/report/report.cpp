@@ -143,7 +143,18 @@ json cell_quality_object(const CellQuality& q) {
            {{"definition", "checkMesh's face skewness; above 4 it calls a face highly skew"},
             {"max", q.max_skewness},
             {"face", q.most_skew_face},
-            {"highly_skew_faces", q.highly_skew_faces}}}};
+            {"highly_skew_faces", q.highly_skew_faces}}},
+          {"link_angle",
+           {{"definition",
+             "degrees between a face between two cells and the link between their seeds; 0 for Voronoi faces up to "
+             "rounding"},
+            {"max", q.max_link_angle},
+            {"face", q.link_angle_face}}},
+          {"non_orthogonality",
+           {{"definition",
+             "checkMesh's: degrees between a face between two cells and the link between their centroids"},
+            {"max", q.max_non_orthogonality},
+            {"mean", q.mean_non_orthogonality}}}};
 }
 
 // The counts of a Voronoi mesh, with its quality when measured.
