@@ -22,7 +22,8 @@ namespace {
 // toward c, when they are within tolerance.
 void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
                         const std::vector<std::int32_t>& cell_of_seed, const Frame& frame,
-                        const std::vector<std::size_t>& first, double relative, UnionFind& sets, std::size_t c) {
+                        const std::vector<std::size_t>& first, const std::vector<double>& relative_of_cell,
+                        UnionFind& sets, std::size_t c) {
   const RawCell& cell = cells[c];
   const Point& seed = frame.normalized[cell_seeds[c]];
   for (std::size_t f = 0; f < cell.num_faces(); ++f) {
@@ -30,6 +31,7 @@ void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Ind
     if (n < 0 || cell_of_seed[static_cast<std::size_t>(n)] <= static_cast<std::int32_t>(c)) continue;
     const auto d = static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)]);
     const RawCell& other = cells[d];
+    const double relative = std::max(relative_of_cell[c], relative_of_cell[d]);
     const auto it = std::find(other.neighbours.begin(), other.neighbours.end(), static_cast<std::int32_t>(cell_seeds[c]));
     if (it == other.neighbours.end()) continue;  // a face only one side sees: degenerate, left to the sweep
     const auto g = static_cast<std::size_t>(it - other.neighbours.begin());
@@ -155,7 +157,7 @@ void merge_coincident_points(WeldedVertices& w, const std::vector<std::uint32_t>
 
 WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
                              const std::vector<std::int32_t>& cell_of_seed, const Frame& frame,
-                             double relative_tolerance) {
+                             const std::vector<double>& relative_tolerance) {
   WeldedVertices w;
   w.first_instance.resize(cells.size() + 1, 0);
   for (std::size_t c = 0; c < cells.size(); ++c) w.first_instance[c + 1] = w.first_instance[c] + cells[c].vertices.size();
@@ -167,7 +169,7 @@ WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vecto
     const Point& seed = frame.normalized[cell_seeds[c]];
     for (std::size_t v = 0; v < cells[c].vertices.size(); ++v) {
       position[w.first_instance[c] + v] = cells[c].vertices[v];
-      tol[w.first_instance[c] + v] = weld_tolerance(cells[c].vertices[v], seed, relative_tolerance);
+      tol[w.first_instance[c] + v] = weld_tolerance(cells[c].vertices[v], seed, relative_tolerance[c]);
     }
   });
 

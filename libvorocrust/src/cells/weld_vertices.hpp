@@ -1,13 +1,16 @@
 // cells/weld_vertices.hpp — one point per Voronoi vertex, whichever cells have it.
 //
-// weld_vertices(cells, cell_seeds, cell_of_seed, frame) numbers the vertices of every raw cell as
-// instances, cell after cell, and makes instances closer than their tolerance one point. The
-// tolerance of an instance is relative_tolerance * max(R, 1) in the frame's units (seed spacing),
-// R being its distance to its cell's seed, the radius of its empty sphere. compute_cells starts
+// weld_vertices(cells, cell_seeds, cell_of_seed, frame, relative) numbers the vertices of every
+// raw cell as instances, cell after cell, and makes instances closer than their tolerance one
+// point. The tolerance of an instance of cell c is relative[c] * max(R, 1) in the frame's units
+// (seed spacing), R being its distance to its cell's seed, the radius of its empty sphere; two
+// instances are one point within the larger of their tolerances. compute_cells starts every cell
 // with 1e-9, far above Voro++'s 1e-11 and far below any edge that is not an artefact of a
-// degenerate vertex, and raises it only where cells still disagree. Counterparts on the two sides of a
-// face shared by two cells are united first, then all remaining points within tolerance of each
-// other, by a sweep in x; the unions are transitive, so every cell sees one point for a cluster.
+// degenerate vertex, and raises it only for cells that still disagree with a neighbour, and those
+// neighbours: welded at 1e-6, a tiny cell's face turns by degrees. Counterparts on the two sides
+// of a face shared by two cells are united first, then all remaining points within tolerance of
+// each other, by a sweep in x; the unions are transitive, so every cell sees one point for a
+// cluster.
 // Points are numbered in the order of their first instance.
 //
 // A point is placed at the circumcentre of the seeds around one of its instances (its cell's
@@ -45,6 +48,6 @@ double weld_tolerance(const Point& vertex, const Point& seed, double relative);
 
 WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vector<Index>& cell_seeds,
                              const std::vector<std::int32_t>& cell_of_seed, const Frame& frame,
-                             double relative_tolerance);
+                             const std::vector<double>& relative_tolerance);
 
 }  // namespace vorocrust::cells
