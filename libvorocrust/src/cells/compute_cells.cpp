@@ -317,6 +317,41 @@ std::vector<CutFace> GrowingCells::skew_faces(double threshold) const {
   return out;
 }
 
+namespace {
+
+// Welds the cells `raw` of `cell_seeds` (cell_of_seed: per seed, its index among them or kNoCell)
+// and assembles them into `mesh`; marks in the result each cell that is not closed after welding
+// or sees a common face differently from its neighbour. Faces toward seeds that have no cell here
+// are boundary faces, checked by no one.
+std::vector<char> weld_and_assemble(const std::vector<Seed>& seeds, const Frame& frame, const std::vector<RawCell>& raw,
+                                    const std::vector<Index>& cell_seeds, const std::vector<std::int32_t>& cell_of_seed,
+                                    const std::vector<double>& tolerance, VoronoiMesh& mesh, bool& closed) {
+  WeldedVertices welded = weld_vertices(raw, cell_seeds, cell_of_seed, frame, tolerance);
+  Assembly assembly{seeds, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
+  std::vector<char> failed(raw.size(), 0);
+  tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
+    std::optional<CellFaces> f = welded_faces(raw[c], welded.first_instance[c], welded.point_of);
+    if (f) assembly.faces[c] = std::move(*f);
+    else failed[c] = 1;
+  });
+  closed = std::count(failed.begin(), failed.end(), 1) == 0;
+  mesh = VoronoiMesh{};
+  mesh.points = std::move(welded.points);
+  if (closed) {
+    assembly.build(mesh, failed);
+    // Cells that disagree only by points splitting an edge on one side agree without them.
+    if (std::count(failed.begin(), failed.end(), 1) > 0 && cells::drop_edge_points(assembly.faces, mesh.points.size()) > 0) {
+      std::fill(failed.begin(), failed.end(), 0);
+      mesh.faces.clear();
+      mesh.cells.clear();
+      assembly.build(mesh, failed);
+    }
+  }
+  return failed;
+}
+
+}  // namespace
+
 VoronoiMesh GrowingCells::mesh() const {
   VoronoiMesh mesh;
   in_arena([&] {
@@ -333,33 +368,8 @@ VoronoiMesh GrowingCells::mesh() const {
     constexpr double kTolerances[] = {1e-9, 1e-9, 1e-8, 1e-7, 1e-6};
     constexpr int kAttempts = static_cast<int>(std::size(kTolerances));
     std::vector<double> tolerance(raw.size(), kTolerances[0]);
-    for (int attempt = 0;; ++attempt) {
-      WeldedVertices welded = weld_vertices(raw, cell_seeds, cell_of_seed, frame, tolerance);
-      Assembly assembly{seeds_, cell_seeds, cell_of_seed, std::vector<CellFaces>(raw.size())};
-      std::vector<char> failed(raw.size(), 0);
-      tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
-        std::optional<CellFaces> f = welded_faces(raw[c], welded.first_instance[c], welded.point_of);
-        if (f) assembly.faces[c] = std::move(*f);
-        else failed[c] = 1;
-      });
-      const bool closed = std::count(failed.begin(), failed.end(), 1) == 0;
-      mesh = VoronoiMesh{};
-      mesh.points = std::move(welded.points);
-      if (closed) {
-        assembly.build(mesh, failed);
-        // Cells that disagree only by points splitting an edge on one side agree without them.
-        if (std::count(failed.begin(), failed.end(), 1) > 0 && cells::drop_edge_points(assembly.faces, mesh.points.size()) > 0) {
-          std::fill(failed.begin(), failed.end(), 0);
-          mesh.faces.clear();
-          mesh.cells.clear();
-          assembly.build(mesh, failed);
-        }
-      }
-      if (std::count(failed.begin(), failed.end(), 1) == 0) break;
-      if (attempt == kAttempts - 1) {
-        fail_on_lowest(failed, cell_seeds, closed ? "and a neighbour see their common face differently after welding"
-                                                  : "is not closed after welding its degenerate vertices");
-      }
+    // The cells that fail and their neighbours, cut again for the next attempt.
+    const auto cut_again = [&](const std::vector<char>& failed, int attempt) {
       std::vector<char> again(raw.size(), 0);
       for (std::size_t c = 0; c < raw.size(); ++c) {
         if (!failed[c]) continue;
@@ -385,6 +395,58 @@ VoronoiMesh GrowingCells::mesh() const {
                                 cells_holding_others(frame.normalized, cell_seeds, raw, which), 1, raw);
       } else {
         recompute_voronoi_cells(frame.normalized, cell_seeds, which, attempt, raw);
+      }
+      return which;
+    };
+    // Which of the cells `which` and their neighbours still disagree among themselves, welded and
+    // assembled alone: a few dozen cells instead of every cell for each attempt. (Only the
+    // assembly of all cells decides; this tells when it is worth running.)
+    const auto disagreeing = [&](const std::vector<std::size_t>& which) {
+      std::vector<char> in(raw.size(), 0);
+      for (std::size_t c : which) {
+        in[c] = 1;
+        for (std::int32_t n : raw[c].neighbours) {
+          if (n >= 0 && cell_of_seed[static_cast<std::size_t>(n)] != kNoCell) in[static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)])] = 1;
+        }
+      }
+      std::vector<std::size_t> local;
+      for (std::size_t c = 0; c < raw.size(); ++c) {
+        if (in[c]) local.push_back(c);
+      }
+      std::vector<RawCell> local_raw(local.size());
+      std::vector<Index> local_seeds(local.size());
+      std::vector<double> local_tolerance(local.size());
+      std::vector<std::int32_t> local_of_seed(cell_of_seed.size(), kNoCell);
+      for (std::size_t k = 0; k < local.size(); ++k) {
+        local_raw[k] = raw[local[k]];
+        local_seeds[k] = cell_seeds[local[k]];
+        local_tolerance[k] = tolerance[local[k]];
+        local_of_seed[local_seeds[k]] = static_cast<std::int32_t>(k);
+      }
+      VoronoiMesh scratch;
+      bool closed = false;
+      const std::vector<char> local_failed =
+          weld_and_assemble(seeds_, frame, local_raw, local_seeds, local_of_seed, local_tolerance, scratch, closed);
+      std::vector<char> failed(raw.size(), 0);
+      for (std::size_t k = 0; k < local.size(); ++k) failed[local[k]] = local_failed[k];
+      return failed;
+    };
+    for (int attempt = 0;; ++attempt) {
+      bool closed = false;
+      const std::vector<char> failed =
+          weld_and_assemble(seeds_, frame, raw, cell_seeds, cell_of_seed, tolerance, mesh, closed);
+      if (std::count(failed.begin(), failed.end(), 1) == 0) break;
+      if (attempt == kAttempts - 1) {
+        fail_on_lowest(failed, cell_seeds, closed ? "and a neighbour see their common face differently after welding"
+                                                  : "is not closed after welding its degenerate vertices");
+      }
+      std::vector<std::size_t> which = cut_again(failed, attempt);
+      // Further attempts while the cells cut again still disagree among themselves, before all
+      // cells are assembled again.
+      while (attempt + 2 < kAttempts) {
+        const std::vector<char> still = disagreeing(which);
+        if (std::count(still.begin(), still.end(), 1) == 0) break;
+        which = cut_again(still, ++attempt);
       }
     }
     drop_unused_points(mesh);
