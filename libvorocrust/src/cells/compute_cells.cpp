@@ -340,7 +340,8 @@ std::vector<char> weld_and_assemble(const std::vector<Seed>& seeds, const Frame&
   if (closed) {
     assembly.build(mesh, failed);
     // Cells that disagree only by points splitting an edge on one side agree without them.
-    if (std::count(failed.begin(), failed.end(), 1) > 0 && cells::drop_edge_points(assembly.faces, mesh.points.size()) > 0) {
+    const bool disagree = std::count(failed.begin(), failed.end(), 1) > 0;
+    if (disagree && cells::drop_edge_points(assembly.faces, mesh.points.size()) > 0) {
       std::fill(failed.begin(), failed.end(), 0);
       mesh.faces.clear();
       mesh.cells.clear();
@@ -368,24 +369,27 @@ VoronoiMesh GrowingCells::mesh() const {
     constexpr double kTolerances[] = {1e-9, 1e-9, 1e-8, 1e-7, 1e-6};
     constexpr int kAttempts = static_cast<int>(std::size(kTolerances));
     std::vector<double> tolerance(raw.size(), kTolerances[0]);
-    // The cells that fail and their neighbours, cut again for the next attempt.
-    const auto cut_again = [&](const std::vector<char>& failed, int attempt) {
-      std::vector<char> again(raw.size(), 0);
+    // The cells marked and the cells next to them, in order.
+    const auto with_neighbours = [&](const std::vector<char>& marked) {
+      std::vector<char> in(raw.size(), 0);
       for (std::size_t c = 0; c < raw.size(); ++c) {
-        if (!failed[c]) continue;
-        again[c] = 1;
+        if (!marked[c]) continue;
+        in[c] = 1;
         for (std::int32_t n : raw[c].neighbours) {
-          if (n >= 0 && cell_of_seed[static_cast<std::size_t>(n)] != kNoCell) {
-            again[static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)])] = 1;
-          }
+          const std::int32_t d = n >= 0 ? cell_of_seed[static_cast<std::size_t>(n)] : kNoCell;
+          if (d != kNoCell) in[static_cast<std::size_t>(d)] = 1;
         }
       }
-      std::vector<std::size_t> which;
+      std::vector<std::size_t> cells;
       for (std::size_t c = 0; c < raw.size(); ++c) {
-        if (!again[c]) continue;
-        which.push_back(c);
-        tolerance[c] = kTolerances[attempt + 1];
+        if (in[c]) cells.push_back(c);
       }
+      return cells;
+    };
+    // The cells that fail and their neighbours, cut again for the next attempt.
+    const auto cut_again = [&](const std::vector<char>& failed, int attempt) {
+      const std::vector<std::size_t> which = with_neighbours(failed);
+      for (std::size_t c : which) tolerance[c] = kTolerances[attempt + 1];
       if (attempt == 0) {
         std::vector<Index> subset(which.size());
         for (std::size_t k = 0; k < which.size(); ++k) subset[k] = cell_seeds[which[k]];
@@ -402,17 +406,9 @@ VoronoiMesh GrowingCells::mesh() const {
     // assembled alone: a few dozen cells instead of every cell for each attempt. (Only the
     // assembly of all cells decides; this tells when it is worth running.)
     const auto disagreeing = [&](const std::vector<std::size_t>& which) {
-      std::vector<char> in(raw.size(), 0);
-      for (std::size_t c : which) {
-        in[c] = 1;
-        for (std::int32_t n : raw[c].neighbours) {
-          if (n >= 0 && cell_of_seed[static_cast<std::size_t>(n)] != kNoCell) in[static_cast<std::size_t>(cell_of_seed[static_cast<std::size_t>(n)])] = 1;
-        }
-      }
-      std::vector<std::size_t> local;
-      for (std::size_t c = 0; c < raw.size(); ++c) {
-        if (in[c]) local.push_back(c);
-      }
+      std::vector<char> marked(raw.size(), 0);
+      for (std::size_t c : which) marked[c] = 1;
+      const std::vector<std::size_t> local = with_neighbours(marked);
       std::vector<RawCell> local_raw(local.size());
       std::vector<Index> local_seeds(local.size());
       std::vector<double> local_tolerance(local.size());
