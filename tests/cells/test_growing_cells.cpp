@@ -44,13 +44,32 @@ std::pair<std::vector<Seed>, std::size_t> held_back(const std::vector<Seed>& see
   return {front, kept};
 }
 
+void expect_same_faces(const std::vector<cells::CutFace>& a, const std::vector<cells::CutFace>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    ASSERT_EQ(a[k].owner_seed, b[k].owner_seed) << "face " << k;
+    ASSERT_EQ(a[k].neighbour_seed, b[k].neighbour_seed) << "face " << k;
+    ASSERT_EQ(a[k].skewness, b[k].skewness) << "face " << k;
+    ASSERT_EQ(a[k].geometry.area, b[k].geometry.area) << "face " << k;
+    ASSERT_EQ(a[k].owner_centroid, b[k].owner_centroid) << "face " << k;
+    ASSERT_EQ(a[k].neighbour_centroid, b[k].neighbour_centroid) << "face " << k;
+  }
+}
+
 void expect_growing_matches_fresh(const std::vector<Seed>& seeds, std::size_t stride) {
+  // A low threshold, so that many faces count and the cells next to those cut again matter.
+  constexpr double kThreshold = 0.3;
   const auto [all, kept] = held_back(seeds, stride);
   cells::GrowingCells growing(std::vector<Seed>(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(kept)), {});
-  // In two steps, as the repair rounds add theirs.
+  growing.skew_faces(kThreshold);
+  // In two steps, as the repair rounds add theirs, the skew faces measured after each.
   const std::size_t middle = kept + (all.size() - kept) / 2;
   growing.add_seeds(std::vector<Seed>(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(middle)));
+  growing.skew_faces(kThreshold);
   growing.add_seeds(all);
+  const std::vector<cells::CutFace> skew = growing.skew_faces(kThreshold);
+  EXPECT_GT(skew.size(), 10u);
+  expect_same_faces(skew, cells::GrowingCells(all, {}).skew_faces(kThreshold));
   const VoronoiMesh fresh = compute_cells(all);
   test::expect_valid(fresh, all);
   expect_same_mesh(growing.mesh(), fresh);

@@ -225,6 +225,7 @@ void GrowingCells::cut_all() {
     frame_ = make_frame(seeds_);
     raw_ = compute_voronoi_cells(frame_.normalized, cell_seeds_);
   });
+  cut_since_.assign(raw_.size(), 1);
 }
 
 void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
@@ -249,6 +250,8 @@ void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
     for (std::size_t c = old_cells; c < cell_seeds_.size(); ++c) which.push_back(c);
     raw_.resize(cell_seeds_.size());
     recompute_voronoi_cells(frame_.normalized, cell_seeds_, which, 0, raw_);
+    cut_since_.resize(raw_.size(), 1);
+    for (std::size_t c : which) cut_since_[c] = 1;
   });
 }
 
@@ -274,26 +277,42 @@ bool spans_an_area(const RawCell& cell, std::size_t f, const Point& seed) {
 
 }  // namespace
 
-std::vector<CutFace> GrowingCells::skew_faces(double threshold) const {
+std::vector<CutFace> GrowingCells::skew_faces(double threshold) {
   const auto point_at = [](const RawCell& cell, std::size_t f) {
     return [&cell, f](std::size_t k) -> const Point& { return cell.vertices[cell.cycles[cell.starts[f] + k]]; };
   };
   const auto size = [](const RawCell& cell, std::size_t f) { return std::size_t{cell.starts[f + 1] - cell.starts[f]}; };
   const auto original = [&](const Point& p) { return Point(frame_.centre + frame_.scale * p); };  // out of the frame
-  std::vector<Point> centroid(raw_.size());
-  std::vector<std::vector<CutFace>> found(raw_.size());
+  if (threshold != skew_threshold_) std::fill(cut_since_.begin(), cut_since_.end(), 1);
+  skew_threshold_ = threshold;
+  centroid_.resize(raw_.size());
+  owned_skew_.resize(raw_.size());
+  // The faces to measure again: those of the cells cut since, and of the cells next to them.
+  std::vector<char> measure(raw_.size(), 0);
+  for (std::size_t c = 0; c < raw_.size(); ++c) {
+    if (!cut_since_[c]) continue;
+    measure[c] = 1;
+    for (std::int32_t n : raw_[c].neighbours) {
+      const std::int32_t d = n >= 0 ? cell_of_seed_[static_cast<std::size_t>(n)] : kNoCell;
+      if (d != kNoCell) measure[static_cast<std::size_t>(d)] = 1;
+    }
+  }
   in_arena([&] {
     tbb::parallel_for(std::size_t{0}, raw_.size(), [&](std::size_t c) {
+      if (!cut_since_[c]) return;
       const RawCell& cell = raw_[c];
       double volume = 0;
       Point moment = Point::Zero();
       for (std::size_t f = 0; f < cell.num_faces(); ++f) {
         add_cone(cell.vertices.front(), size(cell, f), point_at(cell, f), true, volume, moment);
       }
-      centroid[c] = moment / volume;
+      centroid_[c] = moment / volume;
     });
     tbb::parallel_for(std::size_t{0}, raw_.size(), [&](std::size_t c) {
+      if (!measure[c]) return;
       const RawCell& cell = raw_[c];
+      std::vector<CutFace>& found = owned_skew_[c];
+      found.clear();
       for (std::size_t f = 0; f < cell.num_faces(); ++f) {
         const std::int32_t across = cell.neighbours[f];
         const std::int32_t d = across >= 0 ? cell_of_seed_[static_cast<std::size_t>(across)] : kNoCell;
@@ -301,19 +320,20 @@ std::vector<CutFace> GrowingCells::skew_faces(double threshold) const {
         if (!(spans_an_area(cell, f, frame_.normalized[cell_seeds_[c]]))) continue;  // welded away
         CutFace face{cell_seeds_[c], across, d != kNoCell, polygon_geometry(size(cell, f), point_at(cell, f)), 0};
         const std::optional<Point> neighbour =
-            d != kNoCell ? std::optional<Point>(centroid[static_cast<std::size_t>(d)]) : std::nullopt;
-        face.skewness = polygon_skewness(size(cell, f), point_at(cell, f), face.geometry, centroid[c], neighbour);
+            d != kNoCell ? std::optional<Point>(centroid_[static_cast<std::size_t>(d)]) : std::nullopt;
+        face.skewness = polygon_skewness(size(cell, f), point_at(cell, f), face.geometry, centroid_[c], neighbour);
         if (!(face.skewness > threshold)) continue;
         face.geometry.centroid = original(face.geometry.centroid);
         face.geometry.area *= frame_.scale * frame_.scale;
-        face.owner_centroid = original(centroid[c]);
+        face.owner_centroid = original(centroid_[c]);
         if (neighbour) face.neighbour_centroid = original(*neighbour);
-        found[c].push_back(face);
+        found.push_back(face);
       }
     });
   });
+  std::fill(cut_since_.begin(), cut_since_.end(), 0);
   std::vector<CutFace> out;
-  for (const std::vector<CutFace>& list : found) out.insert(out.end(), list.begin(), list.end());
+  for (const std::vector<CutFace>& list : owned_skew_) out.insert(out.end(), list.begin(), list.end());
   return out;
 }
 

@@ -43,7 +43,9 @@ class GrowingCells {
   void add_seeds(const std::vector<Seed>& seeds);
   VoronoiMesh mesh() const;
   // The faces whose skewness exceeds `threshold`, each once, in the order of their lower cell.
-  std::vector<CutFace> skew_faces(double threshold) const;
+  // Measured again only for the cells cut since the last call and their neighbours (a face's
+  // skewness needs both centroids); the same faces as measuring every cell.
+  std::vector<CutFace> skew_faces(double threshold);
 
  private:
   void add_cell(std::size_t seed);
@@ -57,6 +59,12 @@ class GrowingCells {
   std::vector<Index> cell_seeds_;
   std::vector<std::int32_t> cell_of_seed_;  // per seed: its cell, or kNoCell
   std::vector<RawCell> raw_;                // per cell, as cut (mesh() cuts its fallbacks apart)
+  // skew_faces' figures per cell, kept between calls: its centroid, the skew faces it owns, and
+  // whether it was cut since they were measured (at skew_threshold_).
+  std::vector<Point> centroid_;
+  std::vector<std::vector<CutFace>> owned_skew_;
+  std::vector<char> cut_since_;
+  double skew_threshold_ = 0;
 };
 
 }  // namespace vorocrust::cells
