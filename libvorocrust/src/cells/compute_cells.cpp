@@ -257,6 +257,22 @@ void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
 
 namespace {
 
+// The cells marked and the cells next to them (a face between two cells is measured, welded
+// and assembled from both).
+std::vector<char> with_neighbours(const std::vector<RawCell>& raw, const std::vector<std::int32_t>& cell_of_seed,
+                                  const std::vector<char>& marked) {
+  std::vector<char> in(raw.size(), 0);
+  for (std::size_t c = 0; c < raw.size(); ++c) {
+    if (!marked[c]) continue;
+    in[c] = 1;
+    for (std::int32_t n : raw[c].neighbours) {
+      const std::int32_t d = n >= 0 ? cell_of_seed[static_cast<std::size_t>(n)] : kNoCell;
+      if (d != kNoCell) in[static_cast<std::size_t>(d)] = 1;
+    }
+  }
+  return in;
+}
+
 // Whether three points of face f of a cell stand apart by more than welding's first tolerance
 // unites: the faces that welding leaves with two points or one, it drops. (Welding also unites
 // points in chains across cells, and at higher tolerances in its fallbacks; a face it drops so
@@ -288,15 +304,7 @@ std::vector<CutFace> GrowingCells::skew_faces(double threshold) {
   centroid_.resize(raw_.size());
   owned_skew_.resize(raw_.size());
   // The faces to measure again: those of the cells cut since, and of the cells next to them.
-  std::vector<char> measure(raw_.size(), 0);
-  for (std::size_t c = 0; c < raw_.size(); ++c) {
-    if (!cut_since_[c]) continue;
-    measure[c] = 1;
-    for (std::int32_t n : raw_[c].neighbours) {
-      const std::int32_t d = n >= 0 ? cell_of_seed_[static_cast<std::size_t>(n)] : kNoCell;
-      if (d != kNoCell) measure[static_cast<std::size_t>(d)] = 1;
-    }
-  }
+  const std::vector<char> measure = with_neighbours(raw_, cell_of_seed_, cut_since_);
   in_arena([&] {
     tbb::parallel_for(std::size_t{0}, raw_.size(), [&](std::size_t c) {
       if (!cut_since_[c]) return;
@@ -390,16 +398,8 @@ VoronoiMesh GrowingCells::mesh() const {
     constexpr int kAttempts = static_cast<int>(std::size(kTolerances));
     std::vector<double> tolerance(raw.size(), kTolerances[0]);
     // The cells marked and the cells next to them, in order.
-    const auto with_neighbours = [&](const std::vector<char>& marked) {
-      std::vector<char> in(raw.size(), 0);
-      for (std::size_t c = 0; c < raw.size(); ++c) {
-        if (!marked[c]) continue;
-        in[c] = 1;
-        for (std::int32_t n : raw[c].neighbours) {
-          const std::int32_t d = n >= 0 ? cell_of_seed[static_cast<std::size_t>(n)] : kNoCell;
-          if (d != kNoCell) in[static_cast<std::size_t>(d)] = 1;
-        }
-      }
+    const auto cells_and_neighbours = [&](const std::vector<char>& marked) {
+      const std::vector<char> in = with_neighbours(raw, cell_of_seed, marked);
       std::vector<std::size_t> cells;
       for (std::size_t c = 0; c < raw.size(); ++c) {
         if (in[c]) cells.push_back(c);
@@ -408,7 +408,7 @@ VoronoiMesh GrowingCells::mesh() const {
     };
     // The cells that fail and their neighbours, cut again for the next attempt.
     const auto cut_again = [&](const std::vector<char>& failed, int attempt) {
-      const std::vector<std::size_t> which = with_neighbours(failed);
+      const std::vector<std::size_t> which = cells_and_neighbours(failed);
       for (std::size_t c : which) tolerance[c] = kTolerances[attempt + 1];
       if (attempt == 0) {
         std::vector<Index> subset(which.size());
@@ -428,7 +428,7 @@ VoronoiMesh GrowingCells::mesh() const {
     const auto disagreeing = [&](const std::vector<std::size_t>& which) {
       std::vector<char> marked(raw.size(), 0);
       for (std::size_t c : which) marked[c] = 1;
-      const std::vector<std::size_t> local = with_neighbours(marked);
+      const std::vector<std::size_t> local = cells_and_neighbours(marked);
       std::vector<RawCell> local_raw(local.size());
       std::vector<Index> local_seeds(local.size());
       std::vector<double> local_tolerance(local.size());
