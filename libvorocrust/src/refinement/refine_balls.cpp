@@ -150,7 +150,7 @@ class BallRefinement::Impl {
   double initial_radius(const SurfaceSite& site);
   void shrink_neighbours_for_lipschitz(std::uint32_t ball);
   // Balls of every type that reach piece i of the pool; `fresh` holds the balls that came since
-  // the pool was made.
+  // the pool was made (none for a pool just made, whose pieces ask the index of all balls).
   void reaching(const Pool& pool, std::size_t i, const BallTree& fresh, std::vector<std::uint32_t>& out) const;
   void classify(StratumType type, const Subface& s, const std::vector<std::uint32_t>& reaching,
                 std::vector<Candidate>& out) const;
@@ -337,6 +337,10 @@ void BallRefinement::Impl::reaching(const Pool& pool, std::size_t i, const BallT
   const Subface& s = pool.pieces[i];
   const Point centroid = s.centroid();
   const double reach = s.circumradius(centroid);
+  if (pool.known == 0) {  // a pool just made: no ball inherited, none in `fresh`
+    for (int t = 0; t < 3; ++t) balls_.reaching(static_cast<StratumType>(t), centroid, reach, out);
+    return;
+  }
   for (std::uint32_t k = pool.first[i]; k < pool.first[i + 1]; ++k) {
     const RefinedBall& ball = balls_[pool.reaching[k]];
     const double limit = ball.radius + reach;
@@ -489,8 +493,7 @@ Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool la
   // knows no ball yet: its pieces ask the index of all balls, which costs a pass that samples a
   // few pieces far less than a tree of every ball would (a quarter million on cgal_bones).
   BallTree fresh;
-  const bool all_fresh = pool.known == 0;
-  if (!all_fresh) {
+  if (pool.known > 0) {
     for (std::uint32_t b = pool.known; b < balls_.size(); ++b) fresh.insert(balls_[b].site.position, balls_[b].radius, b);
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pool.pieces.size(), 256), [&](const auto& range) {
@@ -498,14 +501,7 @@ Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool la
     std::vector<Candidate> candidates;
     std::vector<CoverBall> cover;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      if (all_fresh) {
-        found.clear();
-        const Point centroid = pool.pieces[i].centroid();
-        const double reach = pool.pieces[i].circumradius(centroid);
-        for (int t = 0; t < 3; ++t) balls_.reaching(static_cast<StratumType>(t), centroid, reach, found);
-      } else {
-        reaching(pool, i, fresh, found);
-      }
+      reaching(pool, i, fresh, found);
       classify(type, pool.pieces[i], found, candidates);
       const auto children = pool.pieces[i].split();
       Outcome& outcome = outcomes[i];
