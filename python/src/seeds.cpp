@@ -1,21 +1,18 @@
 // Seeds (paper 2.4, 2.5) and the protecting balls (2.3): arrays out, arrays in, files.
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #include "bindings.hpp"
 
 namespace vorocrust::python {
 namespace {
 
-constexpr SeedKind kSeedKinds[] = {SeedKind::Surface, SeedKind::Interior, SeedKind::Outside, SeedKind::Cap,
-                                   SeedKind::Repair};
 constexpr StratumType kStratumTypes[] = {StratumType::Corner, StratumType::Crease, StratumType::Patch};
 
 SeedKind seed_kind(const std::string& name) {
-  for (SeedKind k : kSeedKinds) {
-    if (name == to_string(k)) return k;
-  }
-  throw Error(Error::Kind::Usage, "unknown seed kind '" + name + "': expected surface, interior, outside or cap");
+  if (const std::optional<SeedKind> kind = seed_kind_named(name)) return *kind;
+  throw Error(Error::Kind::Usage, "unknown seed kind '" + name + "': expected " + seed_kind_names());
 }
 
 // Seeds from arrays: positions n x 3, labels n; radii and kinds optional.

@@ -466,8 +466,10 @@ class Data(unittest.TestCase):
         np.testing.assert_array_equal(back.radii, [0.5, 0.25, 1.0])
         self.assertEqual(list(back.kinds), ["surface", "outside", "interior"])
         self.assertEqual(list(vorocrust.Seeds(positions, [1, 0, 2]).kinds), ["interior", "outside", "interior"])
-        with self.assertRaises(vorocrust.UsageError):
+        with self.assertRaises(vorocrust.UsageError) as caught:
             vorocrust.Seeds(positions, [1, 0, 2], kinds=["surface", "outside", "inside"])
+        self.assertEqual(caught.exception.message,
+                         "unknown seed kind 'inside': expected surface, interior, outside, cap or repair")
         with self.assertRaises(vorocrust.UsageError):
             vorocrust.Seeds(positions, [1, 0, 2**40])
 

@@ -9,6 +9,9 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "vorocrust/surface_mesh.hpp"
@@ -23,6 +26,10 @@ namespace vorocrust {
 enum class SeedKind : std::uint8_t { Surface, Interior, Outside, Cap, Repair };
 
 const char* to_string(SeedKind kind) noexcept;
+// The kind to_string names `name`, if any.
+std::optional<SeedKind> seed_kind_named(std::string_view name) noexcept;
+// Every kind's name, for messages: "surface, interior, outside, cap or repair".
+std::string seed_kind_names();
 
 // Regions when the input names none: its closed shells bound one material.
 inline constexpr std::int32_t kOutsideRegion = 0;
@@ -35,15 +42,14 @@ struct Seed {
   SeedKind kind = SeedKind::Surface;
 };
 
-// OUTDIR/seeds.csv: `x,y,z,label,radius,kind` (kind surface, interior, outside or cap), 17
-// significant digits, written atomically.
+// OUTDIR/seeds.csv: `x,y,z,label,radius,kind` (kind as to_string names it), 17 significant
+// digits, written atomically.
 void write_seeds_csv(const std::vector<Seed>& seeds, const std::filesystem::path& path);
 
 // Reads what write_seeds_csv writes: the header line `x,y,z,label,radius,kind`, then one seed a
 // line (blank lines skipped). Throws Error(UnreadableInput) naming the file and line of the
 // first bad line: a missing or wrong header, a field count other than six, a number that does
-// not parse or is not finite, a label out of the 32-bit range, a kind other than surface,
-// interior, outside or cap.
+// not parse or is not finite, a label out of the 32-bit range, a kind to_string names none of.
 std::vector<Seed> read_seeds_csv(const std::filesystem::path& path);
 
 }  // namespace vorocrust

@@ -2,6 +2,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -46,13 +47,11 @@ Seed parse_seed(io::LineCursor& in, std::string_view line) {
   if (!io::parse_double(field[4], s.radius) || !std::isfinite(s.radius) || s.radius < 0) {
     in.fail(Error::Kind::UnreadableInput, "radius is not a finite number >= 0: " + io::quote(field[4]));
   }
-  for (SeedKind kind : {SeedKind::Surface, SeedKind::Interior, SeedKind::Outside, SeedKind::Cap, SeedKind::Repair}) {
-    if (field[5] == to_string(kind)) {
-      s.kind = kind;
-      return s;
-    }
+  if (const std::optional<SeedKind> kind = seed_kind_named(field[5])) {
+    s.kind = *kind;
+    return s;
   }
-  in.fail(Error::Kind::UnreadableInput, "kind is not surface, interior, outside, cap or repair: " + io::quote(field[5]));
+  in.fail(Error::Kind::UnreadableInput, "kind is not " + seed_kind_names() + ": " + io::quote(field[5]));
 }
 
 }  // namespace

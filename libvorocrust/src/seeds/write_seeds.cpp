@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <iterator>
 #include <ostream>
 
 #include "vorocrust/atomic_file.hpp"
@@ -15,6 +16,27 @@ const char* to_string(SeedKind kind) noexcept {
     case SeedKind::Repair: return "repair";
   }
   return "?";
+}
+
+namespace {
+constexpr SeedKind kKinds[] = {SeedKind::Surface, SeedKind::Interior, SeedKind::Outside, SeedKind::Cap,
+                               SeedKind::Repair};
+}  // namespace
+
+std::optional<SeedKind> seed_kind_named(std::string_view name) noexcept {
+  for (SeedKind kind : kKinds) {
+    if (name == to_string(kind)) return kind;
+  }
+  return std::nullopt;
+}
+
+std::string seed_kind_names() {
+  std::string names;
+  for (std::size_t k = 0; k < std::size(kKinds); ++k) {
+    names += k == 0 ? "" : k + 1 == std::size(kKinds) ? " or " : ", ";
+    names += to_string(kKinds[k]);
+  }
+  return names;
 }
 
 void write_seeds_csv(const std::vector<Seed>& seeds, const std::filesystem::path& path) {
