@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 #include "geometry/ball_tree.hpp"
@@ -29,6 +30,20 @@ constexpr double kCloseSpacing = 0.01;
 // vector) for a pole: seeds spread all round the sphere (a sheet with one material on both
 // sides) have no middle.
 constexpr double kMinimumMean = 0.02;
+
+// Directions spread evenly over the unit sphere (a Fibonacci lattice), where a pole may go when
+// the middle of its seeds is taken.
+const std::vector<Point> kSpread = [] {
+  constexpr int n = 96;
+  const double turn = std::numbers::pi * (3 - std::sqrt(5.0));
+  std::vector<Point> out;
+  for (int k = 0; k < n; ++k) {
+    const double z = 1 - (2 * k + 1) / static_cast<double>(n);
+    const double rho = std::sqrt(1 - z * z);
+    out.emplace_back(rho * std::cos(turn * k), rho * std::sin(turn * k), z);
+  }
+  return out;
+}();
 
 // The balls on whose spheres p lies, to rounding.
 void spheres_through(const BallIndex& balls, const Point& p, double scale, std::vector<std::uint32_t>& out) {
@@ -66,6 +81,25 @@ class SphereSeeds {
     Seed s{p, region, r, SeedKind::Cap};
     remember(s);
     return s;
+  }
+
+  // Where the middle of a material's seeds on ball b's sphere is taken (another ball holds it: the
+  // seeds lie spread round the sphere, often in arcs either side of a smaller ball), the pole goes
+  // to the free point of the sphere farthest from them. Without it, the seeds' faces through the
+  // centre are narrow wedges between nearly cocircular seeds, which no later seed can reach (all
+  // about them lies inside balls) and checkMesh calls highly skew.
+  std::optional<Seed> place_far_from(std::uint32_t b, const std::vector<Point>& seeds, std::int32_t region) {
+    std::vector<std::pair<double, int>> order;
+    for (int k = 0; k < static_cast<int>(kSpread.size()); ++k) {
+      double nearest = 4;
+      for (const Point& v : seeds) nearest = std::min(nearest, (kSpread[k] - v).squaredNorm());
+      order.emplace_back(-nearest, k);
+    }
+    std::sort(order.begin(), order.end());
+    for (const auto& [score, k] : order) {
+      if (std::optional<Seed> s = place(b, kSpread[k], region)) return s;
+    }
+    return std::nullopt;
   }
 
   // Whether p lies inside no ball but `own` (it would cut into the surface) and clear of their
@@ -122,7 +156,7 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
   struct Cap {
     std::int32_t region;
     Point sum;
-    int count;
+    std::vector<Point> directions;  // of the material's seeds on the sphere, from its centre
   };
   std::vector<std::vector<Cap>> caps(balls.size());
   std::vector<std::uint32_t> on;
@@ -132,9 +166,10 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
     for (std::uint32_t b : on) {
       std::vector<Cap>& here = caps[b];
       auto it = std::find_if(here.begin(), here.end(), [&](const Cap& c) { return c.region == s.region; });
-      if (it == here.end()) it = here.insert(here.end(), Cap{s.region, Point::Zero(), 0});
-      it->sum += (s.position - balls[b].site.position) / balls[b].radius;
-      ++it->count;
+      if (it == here.end()) it = here.insert(here.end(), Cap{s.region, Point::Zero(), {}});
+      const Point u = (s.position - balls[b].site.position) / balls[b].radius;
+      it->sum += u;
+      it->directions.push_back(u);
     }
   }
   SphereSeeds place(balls, regions);
@@ -142,8 +177,10 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
   for (std::uint32_t b = 0; b < balls.size(); ++b) {
     for (const Cap& cap : caps[b]) {
       const double length = cap.sum.norm();
-      if (!(length > kMinimumMean * cap.count)) continue;
-      if (const std::optional<Seed> pole = place.place(b, cap.sum / length, cap.region)) poles.push_back(*pole);
+      if (!(length > kMinimumMean * static_cast<double>(cap.directions.size()))) continue;
+      std::optional<Seed> pole = place.place(b, cap.sum / length, cap.region);
+      if (!pole) pole = place.place_far_from(b, cap.directions, cap.region);
+      if (pole) poles.push_back(*pole);
     }
   }
   return poles;

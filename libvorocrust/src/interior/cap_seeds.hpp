@@ -13,7 +13,8 @@
 // seeds out of a clearance around every ball for that reason.
 //
 // - pole_seeds: one pole per ball and material on its sphere, in the mean direction of that
-//   material's seeds there;
+//   material's seeds there, or where another ball holds that point, at the free point of the
+//   sphere farthest from them;
 // - skew_repair_seeds: where a face of the cells is still highly skew, between two cells of one
 //   material, a seed toward the face on a sphere either seed lies on; where no sphere takes one,
 //   a seed at the face's centroid, pushed out of the balls; where that is no nearer the face
