@@ -34,9 +34,9 @@ del sys.argv[1:3]
 # model, options. The bracket also with Lloyd iterations (its parts are too thin for a lattice;
 # test_cells.py runs all three modes on fandisk through the same checks). The bunny twice: as the
 # scan it is (a crease or corner at most of its decimation's folds) and as the smooth surface it
-# stands for; and once more with another seed, whose balls include spheres where the middle of
-# the inner seeds lies inside another ball (a pole elsewhere on the sphere keeps their faces
-# through its centre from being narrow wedges that checkMesh calls highly skew).
+# stands for; and once more with another seed, whose balls include spheres with no pole, where the
+# middle of the inner seeds lies inside another ball: the skew repair must place a seed elsewhere
+# on the sphere, or faces through its centre stay narrow wedges that checkMesh calls highly skew.
 CASES = [
     ("cgal_fandisk.off", []),
     ("sandia_bracket.obj", []),

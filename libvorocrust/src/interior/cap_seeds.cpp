@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <optional>
 
 #include "geometry/ball_tree.hpp"
+#include "refinement/point_cloud.hpp"
 #include "refinement/ball_index.hpp"
 #include "seeds/locate_regions.hpp"
 
@@ -22,6 +24,11 @@ constexpr double kSpacing = 0.1;
 // ball's centre that the seeds on the sphere share off it, leaving a small skew face there.
 constexpr double kClearance = 1.05;
 constexpr std::uint32_t kNoBall = static_cast<std::uint32_t>(-1);
+
+struct SeedPosition {
+  const Point& operator()(const Seed& s) const { return s.position; }
+};
+using SeedCloud = PointCloudAdaptor<Seed, SeedPosition>;
 // A skew face whose centroid lies this near a ball's centre, in radii, may take a seed on its
 // sphere this much nearer the seeds placed than kSpacing.
 constexpr double kNearCentre = 0.5;
@@ -31,8 +38,8 @@ constexpr double kCloseSpacing = 0.01;
 // sides) have no middle.
 constexpr double kMinimumMean = 0.02;
 
-// Directions spread evenly over the unit sphere (a Fibonacci lattice), where a pole may go when
-// the middle of its seeds is taken.
+// Directions spread evenly over the unit sphere (a Fibonacci lattice), where a repair seed may go
+// on a sphere whose pole is missing.
 const std::vector<Point> kSpread = [] {
   constexpr int n = 96;
   const double turn = std::numbers::pi * (3 - std::sqrt(5.0));
@@ -83,11 +90,8 @@ class SphereSeeds {
     return s;
   }
 
-  // Where the middle of a material's seeds on ball b's sphere is taken (another ball holds it: the
-  // seeds lie spread round the sphere, often in arcs either side of a smaller ball), the pole goes
-  // to the free point of the sphere farthest from them. Without it, the seeds' faces through the
-  // centre are narrow wedges between nearly cocircular seeds, which no later seed can reach (all
-  // about them lies inside balls) and checkMesh calls highly skew.
+  // The seed at the free point of ball b's sphere farthest from `seeds` (directions from its
+  // centre), of the spread directions.
   std::optional<Seed> place_far_from(std::uint32_t b, const std::vector<Point>& seeds, std::int32_t region) {
     std::vector<std::pair<double, int>> order;
     for (int k = 0; k < static_cast<int>(kSpread.size()); ++k) {
@@ -156,7 +160,7 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
   struct Cap {
     std::int32_t region;
     Point sum;
-    std::vector<Point> directions;  // of the material's seeds on the sphere, from its centre
+    int count;
   };
   std::vector<std::vector<Cap>> caps(balls.size());
   std::vector<std::uint32_t> on;
@@ -166,10 +170,9 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
     for (std::uint32_t b : on) {
       std::vector<Cap>& here = caps[b];
       auto it = std::find_if(here.begin(), here.end(), [&](const Cap& c) { return c.region == s.region; });
-      if (it == here.end()) it = here.insert(here.end(), Cap{s.region, Point::Zero(), {}});
-      const Point u = (s.position - balls[b].site.position) / balls[b].radius;
-      it->sum += u;
-      it->directions.push_back(u);
+      if (it == here.end()) it = here.insert(here.end(), Cap{s.region, Point::Zero(), 0});
+      it->sum += (s.position - balls[b].site.position) / balls[b].radius;
+      ++it->count;
     }
   }
   SphereSeeds place(balls, regions);
@@ -177,10 +180,8 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
   for (std::uint32_t b = 0; b < balls.size(); ++b) {
     for (const Cap& cap : caps[b]) {
       const double length = cap.sum.norm();
-      if (!(length > kMinimumMean * static_cast<double>(cap.directions.size()))) continue;
-      std::optional<Seed> pole = place.place(b, cap.sum / length, cap.region);
-      if (!pole) pole = place.place_far_from(b, cap.directions, cap.region);
-      if (pole) poles.push_back(*pole);
+      if (!(length > kMinimumMean * cap.count)) continue;
+      if (const std::optional<Seed> pole = place.place(b, cap.sum / length, cap.region)) poles.push_back(*pole);
     }
   }
   return poles;
@@ -193,6 +194,23 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
   for (const Seed& s : placed) place.remember(s);
   std::vector<Seed> added;
   std::vector<std::uint32_t> a, b;
+  // The directions from a sphere's centre of the seeds of `region` on it, through a tree of the
+  // seeds made when first needed.
+  const SeedCloud cloud{&seeds};
+  std::unique_ptr<StaticKdTree<SeedCloud>> seed_tree;
+  std::vector<std::uint32_t> near;
+  const auto on_sphere = [&](const Point& centre, double r, std::int32_t region) {
+    if (!seed_tree) seed_tree = std::make_unique<StaticKdTree<SeedCloud>>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    near.clear();
+    WithinRadius within(r * r * (1 + 1e-6), near);
+    seed_tree->findNeighbors(within, centre.data(), nanoflann::SearchParams());
+    std::vector<Point> out;
+    for (std::uint32_t i : near) {
+      const Point offset = seeds[i].position - centre;
+      if (seeds[i].region == region && std::abs(offset.norm() - r) <= 1e-9 * r) out.push_back(offset / r);
+    }
+    return out;
+  };
   for (const cells::CutFace& face : skew) {
     if (!face.between_cells) continue;
     const Seed &s = seeds[face.owner_seed], &t = seeds[static_cast<std::size_t>(face.neighbour_seed)];
@@ -225,6 +243,23 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     if (s.kind == SeedKind::Cap && t.kind == SeedKind::Cap && split_farther()) continue;
     spheres_through(balls, s.position, s.radius, a);
     spheres_through(balls, t.position, t.radius, b);
+    // A narrow wedge through the centre of a sphere both seeds lie on, between seeds there that
+    // are nearly cocircular: the sphere has no pole for them (their middle lies inside another
+    // ball, as where they spread round the sphere in arcs either side of a smaller one), and all
+    // about the wedge lies inside balls. A seed at the free point of the sphere farthest from
+    // them replaces the wedge's neighbours by itself.
+    bool repaired = false;
+    for (std::uint32_t q : a) {
+      const Point& centre = balls[q].site.position;
+      const double r = balls[q].radius;
+      if (!std::binary_search(b.begin(), b.end(), q) || !((g.centroid - centre).norm() < kNearCentre * r)) continue;
+      if (const std::optional<Seed> seed = place.place_far_from(q, on_sphere(centre, r, region), region)) {
+        added.push_back(*seed);
+        repaired = true;
+        break;
+      }
+    }
+    if (repaired) continue;
     // The spheres either seed lies on, those of both first (their centres lie on the face's
     // plane), nearest to the face first; the first that takes a seed toward the face.
     std::vector<std::pair<double, std::uint32_t>> candidates;
@@ -236,7 +271,6 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
       }
     }
     std::sort(candidates.begin(), candidates.end());
-    bool repaired = false;
     for (const auto& [order, q] : candidates) {
       const Point towards = g.centroid - balls[q].site.position;
       if (!(towards.norm() > 0)) continue;
