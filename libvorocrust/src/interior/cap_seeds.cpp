@@ -8,8 +8,8 @@
 #include <optional>
 
 #include "geometry/ball_tree.hpp"
-#include "refinement/point_cloud.hpp"
 #include "refinement/ball_index.hpp"
+#include "refinement/point_cloud.hpp"
 #include "seeds/locate_regions.hpp"
 
 namespace vorocrust {
@@ -24,11 +24,6 @@ constexpr double kSpacing = 0.1;
 // ball's centre that the seeds on the sphere share off it, leaving a small skew face there.
 constexpr double kClearance = 1.05;
 constexpr std::uint32_t kNoBall = static_cast<std::uint32_t>(-1);
-
-struct SeedPosition {
-  const Point& operator()(const Seed& s) const { return s.position; }
-};
-using SeedCloud = PointCloudAdaptor<Seed, SeedPosition>;
 // A skew face whose centroid lies this near a ball's centre, in radii, may take a seed on its
 // sphere this much nearer the seeds placed than kSpacing.
 constexpr double kNearCentre = 0.5;
@@ -51,6 +46,11 @@ const std::vector<Point> kSpread = [] {
   }
   return out;
 }();
+
+struct SeedPosition {
+  const Point& operator()(const Seed& s) const { return s.position; }
+};
+using SeedCloud = PointCloudAdaptor<Seed, SeedPosition>;
 
 // The balls on whose spheres p lies, to rounding.
 void spheres_through(const BallIndex& balls, const Point& p, double scale, std::vector<std::uint32_t>& out) {
@@ -244,10 +244,10 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     spheres_through(balls, s.position, s.radius, a);
     spheres_through(balls, t.position, t.radius, b);
     // A narrow wedge through the centre of a sphere both seeds lie on, between seeds there that
-    // are nearly cocircular: the sphere has no pole for them (their middle lies inside another
-    // ball, as where they spread round the sphere in arcs either side of a smaller one), and all
-    // about the wedge lies inside balls. A seed at the free point of the sphere farthest from
-    // them replaces the wedge's neighbours by itself.
+    // are nearly cocircular. Such a sphere usually has no pole for them (their middle lies inside
+    // another ball, as where they spread round the sphere in arcs either side of a smaller one),
+    // and all about the wedge lies inside balls. A seed at the free point of the sphere farthest
+    // from them replaces the wedge's neighbours by itself.
     bool repaired = false;
     for (std::uint32_t q : a) {
       const Point& centre = balls[q].site.position;
