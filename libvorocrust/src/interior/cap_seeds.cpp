@@ -52,6 +52,12 @@ struct SeedPosition {
 };
 using SeedCloud = PointCloudAdaptor<Seed, SeedPosition>;
 
+// Whether p lies on the sphere of `centre` and `radius`, to rounding: seeds placed at a ball-triplet
+// point or on a sphere sit there up to the last digits.
+bool on_sphere_of(const Point& p, const Point& centre, double radius) {
+  return std::abs((p - centre).norm() - radius) <= 1e-9 * radius;
+}
+
 // The balls on whose spheres p lies, to rounding.
 void spheres_through(const BallIndex& balls, const Point& p, double scale, std::vector<std::uint32_t>& out) {
   out.clear();
@@ -60,8 +66,7 @@ void spheres_through(const BallIndex& balls, const Point& p, double scale, std::
     near.clear();
     balls.reaching(type, p, 1e-6 * scale, near);
     for (std::uint32_t b : near) {
-      const double d = (p - balls[b].site.position).norm();
-      if (std::abs(d - balls[b].radius) <= 1e-9 * balls[b].radius) out.push_back(b);
+      if (on_sphere_of(p, balls[b].site.position, balls[b].radius)) out.push_back(b);
     }
   }
   std::sort(out.begin(), out.end());
@@ -134,9 +139,8 @@ class SphereSeeds {
       near_.clear();
       balls_.reaching_scaled(type, p, kClearance, 0, near_);
       for (std::uint32_t q : near_) {
-        if (q == own) continue;
+        if (q == own || on_sphere_of(p, balls_[q].site.position, balls_[q].radius)) continue;
         const double d = (p - balls_[q].site.position).norm();
-        if (std::abs(d - balls_[q].radius) <= 1e-9 * balls_[q].radius) continue;
         if (!deepest || d / balls_[q].radius < depth) {
           deepest = q;
           depth = d / balls_[q].radius;
@@ -206,8 +210,7 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     seed_tree->findNeighbors(within, centre.data(), nanoflann::SearchParams());
     std::vector<Point> out;
     for (std::uint32_t i : near) {
-      const Point offset = seeds[i].position - centre;
-      if (seeds[i].region == region && std::abs(offset.norm() - r) <= 1e-9 * r) out.push_back(offset / r);
+      if (seeds[i].region == region && on_sphere_of(seeds[i].position, centre, r)) out.push_back((seeds[i].position - centre) / r);
     }
     return out;
   };
