@@ -76,26 +76,61 @@ struct Pool {
   std::uint32_t known = 0;
 };
 
-// Where shrunk balls gave up cover, as boxes: a piece of an element that lost cover needs
+// Where a shrunk ball gave up cover: the shell between the radius within which it still covers
+// for any phase and the radius it had. Cover lost anywhere lies in such a shell, since a ball
+// covers within its radius (or a fixed share of it) wherever it covers at all.
+struct LostShell {
+  Point centre;
+  double kept;      // kDeep times the new radius
+  double given_up;  // the old radius
+
+  geometry::Box box() const {
+    geometry::Box b;
+    b.include(Point(centre.array() - given_up));
+    b.include(Point(centre.array() + given_up));
+    return b;
+  }
+  // Whether the convex hull of `corners` meets the shell; `closest` gives its point nearest to a point.
+  template <class Closest>
+  bool meets(const Point* corners, int count, Closest&& closest) const {
+    bool inside = true;
+    for (int k = 0; k < count && inside; ++k) inside = (corners[k] - centre).squaredNorm() < kept * kept;
+    return !inside && (closest(centre) - centre).squaredNorm() < given_up * given_up;
+  }
+};
+
+// The shells given up, in a tree of their boxes: a piece of an element that lost cover needs
 // sampling only where it meets one of them.
 class LostRegions {
  public:
-  explicit LostRegions(const std::vector<geometry::Box>& boxes) : tree_(boxes, numbered(boxes.size())) {}
+  explicit LostRegions(std::vector<LostShell> shells) : shells_(std::move(shells)), tree_(boxes(shells_), numbered(shells_.size())) {}
   bool meets(const Subface& piece) const {
     if (!piece.focused) return true;
     geometry::Box box;
-    for (int k = 0; k < piece.corner_count(); ++k) box.include(piece.corner(k));
+    std::array<Point, 3> corners;
+    for (int k = 0; k < piece.corner_count(); ++k) box.include(corners[k] = piece.corner(k));
     bool hit = false;
-    tree_.for_each_overlap(box, [&](std::uint32_t) { hit = true; });
+    tree_.for_each_where([&](const geometry::Box& b) { return !hit && b.overlaps(box); }, [&](std::uint32_t i) {
+      const LostShell& shell = shells_[i];
+      if (box.squared_distance(shell.centre) >= shell.given_up * shell.given_up) return;
+      hit = shell.meets(corners.data(), piece.corner_count(), [&](const Point& q) { return piece.closest_point(q); });
+    });
     return hit;
   }
 
  private:
+  static std::vector<geometry::Box> boxes(const std::vector<LostShell>& shells) {
+    std::vector<geometry::Box> out;
+    out.reserve(shells.size());
+    for (const LostShell& s : shells) out.push_back(s.box());
+    return out;
+  }
   static std::vector<std::uint32_t> numbered(std::size_t n) {
     std::vector<std::uint32_t> items(n);
     for (std::uint32_t i = 0; i < n; ++i) items[i] = i;
     return items;
   }
+  std::vector<LostShell> shells_;
   geometry::BoxTree tree_;
 };
 
@@ -167,7 +202,7 @@ class BallRefinement::Impl {
   // --- shrinking ------------------------------------------------------------------------------
   enum class Reason { C1, C3, Sliver };  // C1 also stands for C2
   void shrink(std::uint32_t ball, double radius, Reason why);
-  void mark_dirty(const Point& centre, double radius, StratumType type);
+  void mark_dirty(const LostShell& shell, StratumType type);
   void build_element_trees();
   void report(std::string_view phase, double fraction);
   bool has_dirty(StratumType type) const {
@@ -189,9 +224,9 @@ class BallRefinement::Impl {
   // Per element: kClean, kLostCover (a shrunk ball gave up part of it) or kUnsampled.
   static constexpr char kClean = 0, kLostCover = 1, kUnsampled = 2;
   std::vector<char> dirty_edge_, dirty_face_;
-  // Boxes of the balls that shrank, as they were before, for the crease and the patch phase
-  // apart: each phase consumes its own, so a crease pass cannot take the patches' regions.
-  std::vector<geometry::Box> lost_edges_, lost_faces_;
+  // The shells the balls that shrank gave up, for the crease and the patch phase apart: each
+  // phase consumes its own, so a crease pass cannot take the patches' regions.
+  std::vector<LostShell> lost_edges_, lost_faces_;
   // The type being sampled, and where balls of a lower type shrank during its pass.
   int sampling_type_ = 3;
   std::vector<geometry::Box> lost_lower_;
@@ -224,27 +259,25 @@ void BallRefinement::Impl::build_element_trees() {
 }
 
 // Elements of the strata a ball of `type` could cover — its own type and the higher ones — that
-// come within `radius` of `centre` must be sampled again.
-void BallRefinement::Impl::mark_dirty(const Point& centre, double radius, StratumType type) {
-  geometry::Box query;
-  query.include(Point(centre.array() - radius));
-  query.include(Point(centre.array() + radius));
+// meet the shell it gave up must be sampled again.
+void BallRefinement::Impl::mark_dirty(const LostShell& shell, StratumType type) {
+  const geometry::Box query = shell.box();
   if (type <= StratumType::Crease) {
     edge_tree_->for_each_overlap(query, [&](std::uint32_t e) {
       const auto [a, b] = strata_.topology.edges[e];
-      if (geometry::distance_to_segment(centre, mesh_.vertices[a], mesh_.vertices[b]) < radius) {
-        dirty_edge_[e] = std::max(dirty_edge_[e], kLostCover);
-      }
+      const Point ends[2] = {mesh_.vertices[a], mesh_.vertices[b]};
+      const auto closest = [&](const Point& q) { return geometry::closest_on_segment(q, ends[0], ends[1]); };
+      if (shell.meets(ends, 2, closest)) dirty_edge_[e] = std::max(dirty_edge_[e], kLostCover);
     });
   }
   face_tree_->for_each_overlap(query, [&](std::uint32_t f) {
     const Triangle& t = mesh_.triangles[f];
-    if (geometry::distance_to_triangle(centre, mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]]) < radius) {
-      dirty_face_[f] = std::max(dirty_face_[f], kLostCover);
-    }
+    const Point corners[3] = {mesh_.vertices[t[0]], mesh_.vertices[t[1]], mesh_.vertices[t[2]]};
+    const auto closest = [&](const Point& q) { return geometry::closest_on_triangle(q, corners[0], corners[1], corners[2]); };
+    if (shell.meets(corners, 3, closest)) dirty_face_[f] = std::max(dirty_face_[f], kLostCover);
   });
-  if (type <= StratumType::Crease) lost_edges_.push_back(query);
-  lost_faces_.push_back(query);
+  if (type <= StratumType::Crease) lost_edges_.push_back(shell);
+  lost_faces_.push_back(shell);
 }
 
 void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, Reason why) {
@@ -261,7 +294,7 @@ void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, Reason why)
     box.include(Point(b.site.position.array() - old_radius));
     box.include(Point(b.site.position.array() + old_radius));
   }
-  mark_dirty(b.site.position, old_radius, b.site.type);
+  mark_dirty({b.site.position, kDeep * radius, old_radius}, b.site.type);
 }
 
 // The paper bounds r_p by the ball nearest to p alone (r_q + L |p - q|); the bound over every ball
@@ -501,13 +534,19 @@ Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool la
     std::vector<Candidate> candidates;
     std::vector<CoverBall> cover;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      if (last_level) break;
+      const auto children = pool.pieces[i].split();
+      std::uint8_t wanted = 0;  // children of some size that meet a region given up
+      for (std::size_t k = 0; k < children.size(); ++k) {
+        if (children[k].measure() > 0 && lost.meets(children[k])) wanted |= 1 << k;
+      }
+      if (wanted == 0) continue;
       reaching(pool, i, fresh, found);
       classify(type, pool.pieces[i], found, candidates);
-      const auto children = pool.pieces[i].split();
       Outcome& outcome = outcomes[i];
       for (std::size_t k = 0; k < children.size(); ++k) {
         const Subface& child = children[k];
-        if (last_level || !(child.measure() > 0) || !lost.meets(child)) continue;  // below any meaningful size
+        if (!(wanted >> k & 1)) continue;
         const std::size_t found_before = outcome.violations.size();
         if (covers(child, candidates, cover)) {
           find_violations(child, candidates, outcome.violations);
@@ -597,9 +636,9 @@ void BallRefinement::Impl::defer_lost_lower_cover(Pool& pool) {
 
 void BallRefinement::Impl::sample(StratumType type) {
   // Only the lost regions recorded so far can have lost cover; later losses are the next pass's.
-  std::vector<geometry::Box>& lost_boxes = type == StratumType::Crease ? lost_edges_ : lost_faces_;
-  const LostRegions lost(lost_boxes);
-  lost_boxes.clear();
+  std::vector<LostShell>& lost_shells = type == StratumType::Crease ? lost_edges_ : lost_faces_;
+  const LostRegions lost(std::move(lost_shells));
+  lost_shells.clear();
   Pool pool = initial_pool(type);
   // Each return of the phase loop to this type is a pass of its own, with its own progress.
   const int pass = ++passes_[static_cast<int>(type)];
