@@ -396,6 +396,10 @@ void BallRefinement::Impl::classify(StratumType type, const Subface& s, const st
   out.clear();
   for (std::uint32_t b : reaching) {
     const RefinedBall& ball = balls_[b];
+    // Balls that reach the sphere about the piece but not the piece itself are dropped here
+    // rather than tested against each child: a thin piece fills little of its sphere (on
+    // netgen_hinge and cgal_joint a whole face met hundreds of balls that way).
+    if ((s.closest_point(ball.site.position) - ball.site.position).squaredNorm() > ball.radius * ball.radius) continue;
     const double gap = (ball.site.position - centroid).norm() - reach;  // to the piece, at least
     const bool everywhere = !s.is_segment() && gap >= cosmooth_.non_cosmooth_reach(ball.site, s.element, s.corner(0));
     const double limit = ball.site.type > type ? 0 : covering_radius(type, ball.site.type, ball.radius, deep_);
