@@ -1,12 +1,17 @@
 // Supersampling the boundary and querying it (paper appendix A.1, A.2).
 #include "refinement/boundary_samples.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <random>
 
+#include "core/split_mix.hpp"
 #include "geometry/box_tree.hpp"
 #include "geometry/closest_point.hpp"
+#include "geometry/surface_sampling.hpp"
 #include "refinement/point_cloud.hpp"
 #include "refinement/subface.hpp"
 
@@ -20,13 +25,12 @@ struct SitePosition {
 using Adaptor = PointCloudAdaptor<SurfaceSite, SitePosition>;
 using Tree = StaticKdTree<Adaptor>;
 
-// How many of `total` random samples an element with this share of the measure gets: its
-// expected number, rounded up or down at random so that the expectation stays exact. Random
-// points in proportion to measure, stratified by element.
-std::size_t share_of(double total, double share, std::mt19937_64& rng, std::uniform_real_distribution<double>& unit) {
-  const double expected = total * share;
+// How many random samples an element gets: their expected number, rounded up or down by a
+// uniform number u so that the expectation stays exact. Random points in proportion to measure,
+// stratified by element.
+std::size_t share_of(double expected, double u) {
   const double whole = std::floor(expected);
-  return static_cast<std::size_t>(whole) + (unit(rng) < expected - whole ? 1 : 0);
+  return static_cast<std::size_t>(whole) + (u < expected - whole ? 1 : 0);
 }
 
 }  // namespace
@@ -50,27 +54,8 @@ struct BoundarySamples::Trees {
 
 namespace {
 
-constexpr std::uint32_t kGroupSize = 32;
-
-// Splits samples [begin, end) of one face at the median of their widest spread until groups are
-// small; appends the groups and their boxes.
-void group_face(std::vector<Point>& points, Index face, std::uint32_t begin, std::uint32_t end,
-                std::vector<SampleGroup>& groups, std::vector<geometry::Box>& boxes) {
-  geometry::Box box;
-  for (std::uint32_t i = begin; i < end; ++i) box.include(points[i]);
-  if (end - begin <= kGroupSize) {
-    groups.push_back({face, begin, end});
-    boxes.push_back(box);
-    return;
-  }
-  int axis;
-  (box.hi - box.lo).maxCoeff(&axis);
-  const std::uint32_t middle = begin + (end - begin) / 2;
-  std::nth_element(points.begin() + begin, points.begin() + middle, points.begin() + end,
-                   [axis](const Point& a, const Point& b) { return a[axis] < b[axis]; });
-  group_face(points, face, begin, middle, groups, boxes);
-  group_face(points, face, middle, end, groups, boxes);
-}
+constexpr std::size_t kGroupSize = 32;         // patch samples per group, about
+constexpr std::size_t kMaxPiecesPerFace = 4096;  // a face holding a million samples: 256 a group
 
 }  // namespace
 
@@ -86,7 +71,7 @@ BoundarySamples::BoundarySamples(const SurfaceMesh& mesh, const Strata& strata, 
     trees_->adaptors[t].items = &sites_[t];
     trees_->trees[t] = std::make_unique<Tree>(3, trees_->adaptors[t], nanoflann::KDTreeSingleIndexAdaptorParams(16));
   }
-  add_patch_samples(mesh, strata, counts, rng, unit);
+  add_patch_samples(mesh, strata, counts, seed ^ 0x9a7c4f1e5b3d2a01ull);
 }
 
 // Every crease edge's midpoint and quarter points, every non-corner vertex on a crease, then
@@ -118,40 +103,100 @@ void BoundarySamples::add_crease_samples(const SurfaceMesh& mesh, const Strata& 
   const auto n = static_cast<double>(
       std::clamp(counts.crease_per_edge * crease_edges.size(), counts.crease_min, counts.crease_max));
   for (std::size_t k = 0; k < crease_edges.size(); ++k) {
-    for (std::size_t i = share_of(n, lengths[k] / total_length, rng, unit); i > 0; --i) crease_point(crease_edges[k], unit(rng));
+    for (std::size_t i = share_of(n * lengths[k] / total_length, unit(rng)); i > 0; --i) crease_point(crease_edges[k], unit(rng));
   }
 }
 
-// Every face's centroid and points near its corners, then random points by area; filed by face
-// in small groups as they are made.
+// Every face's centroid and points near its corners, then random points by area, stratified:
+// the face is quartered (as the refinement's pool quarters it) until each piece's share is at
+// most a few groups' worth, and each piece gets its share of uniform points; a piece's points
+// form a group and the fixed points one more. Faces are sampled in parallel, each from its own
+// random stream, so the samples do not depend on the thread count: once to count them, once to
+// write them where the counts put them.
 void BoundarySamples::add_patch_samples(const SurfaceMesh& mesh, const Strata& strata, const BoundarySampleCounts& counts,
-                                        std::mt19937_64& rng, std::uniform_real_distribution<double>& unit) {
-  std::vector<double> areas(mesh.num_faces());
+                                        std::uint64_t seed) {
+  const std::size_t faces = mesh.num_faces();
+  std::vector<double> areas(faces);
   double total_area = 0;
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
+  for (Index f = 0; f < faces; ++f) {
     const Triangle& t = mesh.triangles[f];
     total_area += areas[f] = 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
   }
-  const auto n = static_cast<double>(std::clamp(counts.patch_per_face * mesh.num_faces(), counts.patch_min, counts.patch_max));
-  std::vector<geometry::Box> boxes;
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
+  const auto n = static_cast<double>(std::clamp(counts.patch_per_face * faces, counts.patch_min, counts.patch_max));
+  constexpr std::size_t kFixed = 4;
+  // Face f's pieces and how many random points each gets, from its stream; the stream is then
+  // where its points start.
+  const auto plan = [&](Index f, std::vector<Subface>& pieces, std::vector<std::size_t>& shares, std::vector<Subface>& next) {
+    SplitMix64 random = SplitMix64::stream(seed, f);
+    pieces.clear();
+    shares.clear();
+    if (!(total_area > 0)) return random;
+    const std::size_t wanted = share_of(n * areas[f] / total_area, random.unit());
     const Triangle& t = mesh.triangles[f];
-    const Point &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-    const auto begin = static_cast<std::uint32_t>(patch_points_.size());
-    for (const Point& p : {Point((a + b + c) / 3), Point(0.9 * a + 0.05 * b + 0.05 * c),
-                           Point(0.05 * a + 0.9 * b + 0.05 * c), Point(0.05 * a + 0.05 * b + 0.9 * c)}) {
-      patch_points_.push_back(p);
+    pieces.assign(1, Subface::triangle(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]], f));
+    for (std::size_t share = wanted; share > 2 * kGroupSize && pieces.size() < kMaxPiecesPerFace; share /= 4) {
+      next.clear();
+      for (const Subface& piece : pieces) {
+        for (const Subface& child : piece.split()) next.push_back(child);
+      }
+      pieces.swap(next);
     }
-    if (total_area > 0) {
-      const Subface face = Subface::triangle(a, b, c, f);
-      for (std::size_t i = share_of(n, areas[f] / total_area, rng, unit); i > 0; --i) {
-        patch_points_.push_back(face.random_point(rng, unit));
+    const double per_piece = static_cast<double>(wanted) / static_cast<double>(pieces.size());
+    for (std::size_t k = 0; k < pieces.size(); ++k) shares.push_back(share_of(per_piece, random.unit()));
+    return random;
+  };
+  struct Scratch {
+    std::vector<Subface> pieces, next;
+    std::vector<std::size_t> shares;
+  };
+  // first_point[f], first_group[f]: where face f's samples and groups go.
+  std::vector<std::size_t> first_point(faces + 1, 0), first_group(faces + 1, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 256), [&](const auto& range) {
+    Scratch w;
+    for (std::size_t f = range.begin(); f != range.end(); ++f) {
+      plan(static_cast<Index>(f), w.pieces, w.shares, w.next);
+      first_point[f + 1] = kFixed;
+      first_group[f + 1] = 1;
+      for (std::size_t share : w.shares) first_point[f + 1] += share, first_group[f + 1] += share > 0;
+    }
+  });
+  for (std::size_t f = 0; f < faces; ++f) first_point[f + 1] += first_point[f], first_group[f + 1] += first_group[f];
+  patch_points_.resize(first_point[faces]);
+  trees_->groups.resize(first_group[faces]);
+  std::vector<geometry::Box> boxes(first_group[faces]);
+  trees_->face_sites.resize(faces);
+  trees_->face_corners.resize(faces);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces, 256), [&](const auto& range) {
+    Scratch w;
+    for (std::size_t f = range.begin(); f != range.end(); ++f) {
+      const Triangle& t = mesh.triangles[f];
+      const Point &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+      trees_->face_sites[f] = patch_site(strata, static_cast<Index>(f), a);
+      trees_->face_corners[f] = {a, b, c};
+      std::size_t point = first_point[f], group = first_group[f];
+      const auto close_group = [&](std::size_t begin) {
+        geometry::Box& box = boxes[group];
+        for (std::size_t i = begin; i < point; ++i) box.include(patch_points_[i]);
+        trees_->groups[group++] = {static_cast<Index>(f), static_cast<std::uint32_t>(begin), static_cast<std::uint32_t>(point)};
+      };
+      for (const Point& p : {Point((a + b + c) / 3), Point(0.9 * a + 0.05 * b + 0.05 * c),
+                             Point(0.05 * a + 0.9 * b + 0.05 * c), Point(0.05 * a + 0.05 * b + 0.9 * c)}) {
+        patch_points_[point++] = p;
+      }
+      close_group(point - kFixed);
+      SplitMix64 random = plan(static_cast<Index>(f), w.pieces, w.shares, w.next);
+      for (std::size_t k = 0; k < w.pieces.size(); ++k) {
+        if (w.shares[k] == 0) continue;
+        const Subface& piece = w.pieces[k];
+        const std::size_t begin = point;
+        for (std::size_t i = 0; i < w.shares[k]; ++i) {
+          const double u = random.unit();
+          patch_points_[point++] = geometry::point_in_triangle(piece.corner(0), piece.corner(1), piece.corner(2), u, random.unit());
+        }
+        close_group(begin);
       }
     }
-    group_face(patch_points_, f, begin, static_cast<std::uint32_t>(patch_points_.size()), trees_->groups, boxes);
-    trees_->face_sites.push_back(patch_site(strata, f, a));
-    trees_->face_corners.push_back({a, b, c});
-  }
+  });
   std::vector<std::uint32_t> items(trees_->groups.size());
   for (std::uint32_t i = 0; i < items.size(); ++i) items[i] = i;
   trees_->group_tree = std::make_unique<geometry::BoxTree>(std::move(boxes), std::move(items));

@@ -41,7 +41,7 @@ class BoundarySamples {
   void add_crease_samples(const SurfaceMesh& mesh, const Strata& strata, const BoundarySampleCounts& counts,
                           std::mt19937_64& rng, std::uniform_real_distribution<double>& unit);
   void add_patch_samples(const SurfaceMesh& mesh, const Strata& strata, const BoundarySampleCounts& counts,
-                         std::mt19937_64& rng, std::uniform_real_distribution<double>& unit);
+                         std::uint64_t seed);
   // Lowers `best` (a squared distance) to that of the nearest patch sample not co-smooth with center.
   void nearest_non_cosmooth_patch_sample(const SurfaceSite& center, const CoSmoothness& cosmooth, double& best) const;
 
