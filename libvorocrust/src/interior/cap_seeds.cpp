@@ -247,16 +247,22 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     spheres_through(balls, s.position, s.radius, a);
     spheres_through(balls, t.position, t.radius, b);
     // A narrow wedge through the centre of a sphere both seeds lie on, between seeds there that
-    // are nearly cocircular. Such a sphere usually has no pole for them (their middle lies inside
-    // another ball, as where they spread round the sphere in arcs either side of a smaller one),
-    // and all about the wedge lies inside balls. A seed at the free point of the sphere farthest
-    // from them replaces the wedge's neighbours by itself.
+    // are nearly cocircular: near the centre every cell of a seed on the sphere is a cone over
+    // its part of the sphere. A seed on the sphere toward the face takes the cones' corner there
+    // (igl_bunny's big corner balls, with their seeds spread all round). Where that point lies in
+    // other balls, as about a sphere whose seeds spread round it in arcs either side of a smaller
+    // ball (and which then has no pole), a seed at the free point of the sphere farthest from
+    // them replaces the wedge's neighbours by itself.
     bool repaired = false;
     for (std::uint32_t q : a) {
       const Point& centre = balls[q].site.position;
       const double r = balls[q].radius;
       if (!std::binary_search(b.begin(), b.end(), q) || !((g.centroid - centre).norm() < kNearCentre * r)) continue;
-      if (const std::optional<Seed> seed = place.place_far_from(q, on_sphere(centre, r, region), region)) {
+      const Point towards = g.centroid - centre;
+      std::optional<Seed> seed;
+      if (towards.norm() > 0) seed = place.place(q, towards.normalized(), region, kCloseSpacing);
+      if (!seed) seed = place.place_far_from(q, on_sphere(centre, r, region), region);
+      if (seed) {
         added.push_back(*seed);
         repaired = true;
         break;
