@@ -413,8 +413,11 @@ VoronoiMesh GrowingCells::mesh() const {
       if (attempt == 0) {
         std::vector<Index> subset(which.size());
         for (std::size_t k = 0; k < which.size(); ++k) subset[k] = cell_seeds[which[k]];
-        std::vector<RawCell> redone = compute_voronoi_cells_in_containers(frame.normalized, subset);
-        for (std::size_t k = 0; k < which.size(); ++k) raw[which[k]] = std::move(redone[k]);
+        std::vector<char> lost;
+        std::vector<RawCell> redone = compute_voronoi_cells_in_containers(frame.normalized, subset, lost);
+        for (std::size_t k = 0; k < which.size(); ++k) {
+          if (!lost[k]) raw[which[k]] = std::move(redone[k]);  // else the cell as cut alone stays
+        }
         recompute_voronoi_cells(frame.normalized, cell_seeds,
                                 cells_holding_others(frame.normalized, cell_seeds, raw, which), 1, raw);
       } else {

@@ -136,15 +136,6 @@ Layout make_layout(const std::vector<Point>& positions) {
   return l;
 }
 
-// What went wrong in a slab: the lowest seed whose cell could not be made, and why.
-struct SlabFailure {
-  Index seed = std::numeric_limits<Index>::max();
-  bool unbounded = false;
-  void note(Index s, bool is_unbounded) {
-    if (s < seed) seed = s, unbounded = is_unbounded;
-  }
-};
-
 // A Voro++ container's box and grid.
 struct Box {
   Point lower, upper;
@@ -155,9 +146,10 @@ class SlabWorker {
  public:
   SlabWorker(const std::vector<Point>& positions, const Layout& layout) : positions_(positions), layout_(layout) {}
 
-  // Computes the cells of `entries` (indices into cell_seeds), writing out[entry].
+  // Computes the cells of `pending` (indices into cell_seeds), writing out[entry], or marking
+  // lost[entry] where Voro++ gives no cell or one that keeps a wall of the container.
   void run(const std::vector<Index>& cell_seeds, std::vector<std::size_t> pending, std::vector<RawCell>& out,
-           SlabFailure& failure) {
+           std::vector<char>& lost) {
     const int a = layout_.axis;
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (std::size_t e : pending) {
@@ -179,7 +171,7 @@ class SlabWorker {
       for (std::size_t k = 0; k < pending.size(); ++k) {
         const Index seed = cell_seeds[pending[k]];
         if (!con.compute_cell(cell_, order.o[2 * k], order.o[2 * k + 1])) {
-          failure.note(seed, false);
+          lost[pending[k]] = 1;
           continue;
         }
         RawCell& cell = out[pending[k]];
@@ -195,8 +187,8 @@ class SlabWorker {
           retry.push_back(pending[k]);
           continue;
         }
-        for (std::int32_t n : cell.neighbours) {
-          if (n < 0) failure.note(seed, true);
+        if (std::any_of(cell.neighbours.begin(), cell.neighbours.end(), [](std::int32_t n) { return n < 0; })) {
+          lost[pending[k]] = 1;
         }
       }
       pending.swap(retry);
@@ -457,8 +449,10 @@ std::vector<std::size_t> cells_reached(const std::vector<Point>& positions, cons
   return out;
 }
 
-std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds) {
+std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                                                         std::vector<char>& lost) {
   std::vector<RawCell> out(cell_seeds.size());
+  lost.assign(cell_seeds.size(), 0);
   if (cell_seeds.empty()) return out;
   const Layout layout = make_layout(positions);
 
@@ -470,28 +464,12 @@ std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point
     return vx < vy || (vx == vy && x < y);
   });
   const std::size_t slabs = (cell_seeds.size() + kSlabCells - 1) / kSlabCells;
-  std::vector<SlabFailure> failures(slabs);
   tbb::parallel_for(std::size_t{0}, slabs, [&](std::size_t s) {
     const auto begin = by_axis.begin() + static_cast<std::ptrdiff_t>(s * kSlabCells);
     const auto end = by_axis.begin() + static_cast<std::ptrdiff_t>(std::min(by_axis.size(), (s + 1) * kSlabCells));
     SlabWorker worker(positions, layout);
-    worker.run(cell_seeds, std::vector<std::size_t>(begin, end), out, failures[s]);
+    worker.run(cell_seeds, std::vector<std::size_t>(begin, end), out, lost);
   });
-
-  // Report the lowest failing seed, whichever thread met it first.
-  const SlabFailure* worst = nullptr;
-  for (const SlabFailure& f : failures) {
-    if (!worst || f.seed < worst->seed) worst = &f;
-  }
-  if (worst && worst->seed != std::numeric_limits<Index>::max()) {
-    const std::string seed = std::to_string(worst->seed);
-    if (worst->unbounded) {
-      throw Error(Error::Kind::InvalidGeometry,
-                  "cell of seed " + seed + " is not bounded by seeds: the seeds do not enclose the materials "
-                  "(seeds of no material must surround them)");
-    }
-    throw Error(Error::Kind::InvalidGeometry, "Voro++ could not compute the cell of seed " + seed);
-  }
   return out;
 }
 
