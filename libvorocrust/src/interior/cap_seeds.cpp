@@ -28,6 +28,7 @@ constexpr std::uint32_t kNoBall = static_cast<std::uint32_t>(-1);
 // sphere this much nearer the seeds placed than kSpacing.
 constexpr double kNearCentre = 0.5;
 constexpr double kCloseSpacing = 0.01;
+constexpr double kTwin = 1e-3;  // a pole this near a seed, in radii, would be its twin
 // A material's seeds must agree on a direction this well (the length of their mean unit
 // vector) for a pole: seeds spread all round the sphere (a sheet with one material on both
 // sides) have no middle.
@@ -47,10 +48,6 @@ const std::vector<Point> kSpread = [] {
   return out;
 }();
 
-struct SeedPosition {
-  const Point& operator()(const Seed& s) const { return s.position; }
-};
-using SeedCloud = PointCloudAdaptor<Seed, SeedPosition>;
 
 // Whether p lies on the sphere of `centre` and `radius`, to rounding: seeds placed at a ball-triplet
 // point or on a sphere sit there up to the last digits.
@@ -179,12 +176,27 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
       ++it->count;
     }
   }
+  // A cap whose seeds lie about one of them (a lone seed, or others symmetric about it) has its
+  // pole on that seed, to rounding: the two would be twins, one cell made two by a plane through
+  // nearly coincident vertices that no welding tolerance resolves (cgal_bones: a pole 6e-17 from
+  // a seed).
+  const SeedCloud cloud{&surface_seeds};
+  const StaticKdTree<SeedCloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  std::vector<std::uint32_t> near;
+  const auto on_a_seed = [&](std::uint32_t b, const Point& u) {
+    const Point p = balls[b].site.position + balls[b].radius * u;
+    const double tolerance = kTwin * balls[b].radius;
+    near.clear();
+    WithinRadius within(tolerance * tolerance, near);
+    tree.findNeighbors(within, p.data(), nanoflann::SearchParams());
+    return !near.empty();
+  };
   SphereSeeds place(balls, regions);
   std::vector<Seed> poles;
   for (std::uint32_t b = 0; b < balls.size(); ++b) {
     for (const Cap& cap : caps[b]) {
       const double length = cap.sum.norm();
-      if (!(length > kMinimumMean * cap.count)) continue;
+      if (!(length > kMinimumMean * cap.count) || on_a_seed(b, cap.sum / length)) continue;
       if (const std::optional<Seed> pole = place.place(b, cap.sum / length, cap.region)) poles.push_back(*pole);
     }
   }

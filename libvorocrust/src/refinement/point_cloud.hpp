@@ -8,6 +8,7 @@
 #include <nanoflann.hpp>
 #include <vector>
 
+#include "vorocrust/seeds.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust {
@@ -27,6 +28,10 @@ struct PointCloudAdaptor {
 struct IdentityPosition {
   const Point& operator()(const Point& p) const { return p; }
 };
+struct SeedPosition {
+  const Point& operator()(const Seed& s) const { return s.position; }
+};
+using SeedCloud = PointCloudAdaptor<Seed, SeedPosition>;
 
 template <class Adaptor>
 using StaticKdTree = nanoflann::KDTreeSingleIndexAdaptor<

@@ -10,7 +10,7 @@
 namespace vorocrust {
 
 struct SurfaceSeeds {
-  std::vector<Seed> seeds;  // two per seed pair, in the pairs' order
+  std::vector<Seed> seeds;  // two per seed pair, in the pairs' order, but for near twins (one kept)
   // The Voronoi facets between the two seeds of a pair that the input surface passes between:
   // seeds of different regions, or of one region on either side of an open sheet (which splits
   // the cells there all the same). With no half-covered pair left each
