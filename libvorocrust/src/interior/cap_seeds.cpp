@@ -28,7 +28,7 @@ constexpr std::uint32_t kNoBall = static_cast<std::uint32_t>(-1);
 // sphere this much nearer the seeds placed than kSpacing.
 constexpr double kNearCentre = 0.5;
 constexpr double kCloseSpacing = 0.01;
-constexpr double kTwin = 1e-3;  // a pole this near a seed, in radii, would be its twin
+constexpr double kPoleOffSeed = 1e-3;  // a pole nearer a seed than this, in radii, would be its twin
 // A material's seeds must agree on a direction this well (the length of their mean unit
 // vector) for a pole: seeds spread all round the sphere (a sheet with one material on both
 // sides) have no middle.
@@ -185,10 +185,8 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
   std::vector<std::uint32_t> near;
   const auto on_a_seed = [&](std::uint32_t b, const Point& u) {
     const Point p = balls[b].site.position + balls[b].radius * u;
-    const double tolerance = kTwin * balls[b].radius;
-    near.clear();
-    WithinRadius within(tolerance * tolerance, near);
-    tree.findNeighbors(within, p.data(), nanoflann::SearchParams());
+    const double tolerance = kPoleOffSeed * balls[b].radius;
+    points_within(tree, p, tolerance * tolerance, near);
     return !near.empty();
   };
   SphereSeeds place(balls, regions);
@@ -217,9 +215,7 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
   std::vector<std::uint32_t> near;
   const auto on_sphere = [&](const Point& centre, double r, std::int32_t region) {
     if (!seed_tree) seed_tree = std::make_unique<StaticKdTree<SeedCloud>>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-    near.clear();
-    WithinRadius within(r * r * (1 + 1e-6), near);
-    seed_tree->findNeighbors(within, centre.data(), nanoflann::SearchParams());
+    points_within(*seed_tree, centre, r * r * (1 + 1e-6), near);
     std::vector<Point> out;
     for (std::uint32_t i : near) {
       if (seeds[i].region == region && on_sphere_of(seeds[i].position, centre, r)) out.push_back((seeds[i].position - centre) / r);

@@ -13,14 +13,14 @@
 // seeds out of a clearance around every ball for that reason.
 //
 // - pole_seeds: one pole per ball and material on its sphere, in the mean direction of that
-//   material's seeds there;
+//   material's seeds there, unless that lands on a surface seed;
 // - skew_repair_seeds: where a face of the cells is still highly skew, between two cells of one
-//   material: if it is a wedge through the centre of a sphere both seeds lie on, a seed at the
-//   free point of that sphere farthest from the material's seeds there; else a seed toward the
-//   face on a sphere either seed lies on; where no sphere takes one, a seed at the face's
-//   centroid, pushed out of the balls; where that is no nearer the face than the cells' seeds, a
-//   seed at the centroid of the cell whose centroid lies farther from its seed, which splits it.
-//   Faces between two seeds on spheres are split first.
+//   material: if it is a wedge through the centre of a sphere both seeds lie on, a seed on that
+//   sphere toward the face, or else at its free point farthest from the material's seeds there;
+//   else a seed toward the face on a sphere either seed lies on; where no sphere takes one, a
+//   seed at the face's centroid, pushed out of the balls; where that is no nearer the face than
+//   the cells' seeds, a seed at the centroid of the cell whose centroid lies farther from its
+//   seed, which splits it. Faces between two seeds on spheres are split first.
 // A seed is kept only where it lies in the material it is placed for (a ray to the surface says
 // so), inside no other ball, and clear of the seeds already placed this way.
 #pragma once

@@ -86,4 +86,12 @@ class WithinRadius {
   std::vector<std::uint32_t>& out_;
 };
 
+// The indices of the points of `tree` strictly within sqrt(squared_radius) of p, into `out`.
+template <class Tree>
+void points_within(const Tree& tree, const Point& p, double squared_radius, std::vector<std::uint32_t>& out) {
+  out.clear();
+  WithinRadius within(squared_radius, out);
+  tree.findNeighbors(within, p.data(), nanoflann::SearchParams());
+}
+
 }  // namespace vorocrust

@@ -31,9 +31,7 @@ std::vector<char> later_twins(const std::vector<Seed>& seeds) {
     std::vector<std::uint32_t> near;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const Seed& s = seeds[i];
-      near.clear();
-      WithinRadius within(kTwin * s.radius * kTwin * s.radius, near);
-      tree.findNeighbors(within, s.position.data(), nanoflann::SearchParams());
+      points_within(tree, s.position, kTwin * s.radius * kTwin * s.radius, near);
       twin[i] = std::any_of(near.begin(), near.end(), [&](std::uint32_t j) { return j < i && seeds[j].region == s.region; });
     }
   });
