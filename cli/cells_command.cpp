@@ -50,7 +50,7 @@ int run_cells(const CellsArgs& args) {
   // its compact form and `vorocrust quality OUTDIR` finds them.
   std::error_code same_ec;
   if (!fs::equivalent(args.seeds_file, out / "seeds.csv", same_ec)) write_seeds_csv(seeds, out / "seeds.csv");
-  write_volume_mesh(mesh, out, args.formats);
+  write_volume_mesh(mesh, out, args.formats, &quality);
   write_histogram_svg(out / "quality.svg", "cell quality: " + args.seeds_file, {cell_quality_panel(quality)});
   CellsReport report;
   report.command = args.command_line;

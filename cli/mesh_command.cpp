@@ -96,7 +96,7 @@ int run_mesh(const MeshArgs& args) {
     write_or_remove(surface, "surface.ply", [&](const auto& path) { write_mesh(result->surface, path); });
     const bool cells = options.stop_after >= Stage::Cells;
     if (cells) {
-      write_volume_mesh(result->cells, out, args.formats);
+      write_volume_mesh(result->cells, out, args.formats, result->cell_quality ? &*result->cell_quality : nullptr);
     } else {
       remove_volume_outputs(out);
     }

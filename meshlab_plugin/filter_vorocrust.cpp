@@ -160,9 +160,10 @@ QStringList write_outputs(const vorocrust::MeshResult& result, const OutputReque
     writer(output.folder / name);
     written << name;
   };
+  const vorocrust::CellQuality* quality = result.cell_quality ? &*result.cell_quality : nullptr;
   for (const vorocrust::VolumeFormat& f : vorocrust::volume_formats()) {
     const bool wanted = std::find(output.volume.begin(), output.volume.end(), f.name) != output.volume.end();
-    write(wanted, f.output, [&](const auto&) { vorocrust::write_volume_format(result.cells, output.folder, f.name); });
+    write(wanted, f.output, [&](const auto&) { vorocrust::write_volume_format(result.cells, output.folder, f.name, quality); });
   }
   write(output.seeds, "seeds.csv", [&](const auto& path) { vorocrust::write_seeds_csv(result.seeds, path); });
   write(output.surface, "surface.obj", [&](const auto& path) { vorocrust::write_mesh(result.surface, path); });

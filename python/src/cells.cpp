@@ -177,7 +177,7 @@ seeds (outside seeds must surround the materials).
   def_writer<Cells>(
       m, "write_vtu", "cells", "path", [](const Cells& c, const auto& p) { write_vtu(*c.mesh, p); }, R"doc(
 Writes the cells as a VTK XML unstructured grid (mesh.vtu: polyhedron cells, cell data
-material, seed, volume) that VTK 9.1 and ParaView read; atomically.
+material, seed, volume, aspect_ratio) that VTK 9.1 and ParaView read; atomically.
 )doc");
   def_writer<Cells>(
       m, "write_tough", "cells", "path", [](const Cells& c, const auto& p) { write_tough_mesh(*c.mesh, p); }, R"doc(

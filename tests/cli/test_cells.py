@@ -180,8 +180,13 @@ class Cells(unittest.TestCase):
         self.assertAlmostEqual(q["shortest_edge"]["min"], 1, delta=1e-9)
         self.assertAlmostEqual(q["volume"]["total"], cells, delta=1e-8)
         # The same volumes VTK finds in mesh.vtu.
-        self.assertAlmostEqual(sum(vtk_cell_volumes(read_vtu(self.path("out", "mesh.vtu")))), q["volume"]["total"],
-                               delta=1e-9 * cells)
+        grid = read_vtu(self.path("out", "mesh.vtu"))
+        self.assertAlmostEqual(sum(vtk_cell_volumes(grid)), q["volume"]["total"], delta=1e-9 * cells)
+        # Each cell's aspect ratio beside it, for ParaView's Threshold.
+        ratios = cell_array(grid, "aspect_ratio")
+        self.assertEqual(len(ratios), cells)
+        for ratio in ratios:
+            self.assertAlmostEqual(ratio, math.sqrt(3), delta=1e-9)
         svg = ElementTree.parse(self.path("out", "quality.svg")).getroot()
         texts = [e.text for e in svg.iter("{http://www.w3.org/2000/svg}text")]
         self.assertIn("cell aspect ratio R / r (circumradius over inradius)", texts)

@@ -83,6 +83,14 @@ class VolumeMeshOfEachModel(unittest.TestCase):
                 enclosed = obj_enclosed_volume(os.path.join(out, "surface.obj"))
                 self.assertAlmostEqual(vtk_boundary_volume(grid), enclosed, delta=1e-9 * enclosed)
                 self.assertAlmostEqual(sum(cell_array(grid, "volume")), enclosed, delta=1e-9 * enclosed)
+                # mesh.vtu holds the aspect ratio the report sums up, cell by cell.
+                ratios = cell_array(grid, "aspect_ratio")
+                ratio = quality["aspect_ratio"]
+                self.assertEqual(len(ratios), material)
+                self.assertGreaterEqual(min(ratios), 1)
+                self.assertAlmostEqual(max(ratios), ratio["max"], delta=1e-12 * ratio["max"])
+                self.assertAlmostEqual(sum(ratios) / len(ratios), ratio["mean"], delta=1e-12 * ratio["mean"])
+                self.assertEqual(sum(1 for a in ratios if a > ratio["histogram"]["high"]), ratio["histogram"]["above_high"])
                 inside = sum(region["volume"] for region in report["regions"] if region["label"] > 0)
                 hausdorff = report["surface"]["quality"]["hausdorff"]["distance"]
                 self.assertLessEqual(abs(enclosed - inside), hausdorff * report["input"]["area"])

@@ -480,6 +480,10 @@ class MeshLabCase(unittest.TestCase):
         from vtk_volume import vtk_boundary_volume
         measured = vtk_boundary_volume(grid)
         own = grid.GetCellData().GetArray("volume")
+        # Each cell's aspect ratio (circumradius over inradius) beside it: at least 1, finite.
+        ratios = grid.GetCellData().GetArray("aspect_ratio")
+        self.assertEqual(ratios.GetNumberOfTuples(), grid.GetNumberOfCells())
+        self.assertTrue(all(1 <= ratios.GetValue(c) < float("inf") for c in range(ratios.GetNumberOfTuples())))
         materials = grid.GetCellData().GetArray("material")
         by_material = collections.defaultdict(float)
         for c in range(own.GetNumberOfTuples()):

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "vorocrust/cell_quality.hpp"
 #include "vorocrust/cells.hpp"
 
 namespace vorocrust {
@@ -32,12 +33,15 @@ std::span<const VolumeFormat> volume_formats();
 // Every format's name, in the order above: the default of every front end.
 std::vector<std::string> volume_format_names();
 
+// `quality`: the mesh's measure_cell_quality where the caller has it (write_vtu measures it
+// otherwise).
 void write_volume_mesh(const VoronoiMesh& mesh, const std::filesystem::path& folder,
-                       const std::vector<std::string>& formats);
+                       const std::vector<std::string>& formats, const CellQuality* quality = nullptr);
 
 // One format, by name, into its file or folder in `folder`; leaves the others' outputs alone.
 // Throws Error(Usage) naming an unknown format.
-void write_volume_format(const VoronoiMesh& mesh, const std::filesystem::path& folder, const std::string& format);
+void write_volume_format(const VoronoiMesh& mesh, const std::filesystem::path& folder, const std::string& format,
+                         const CellQuality* quality = nullptr);
 
 // Removes every volume format's output from `folder` (a run that made no cells).
 void remove_volume_outputs(const std::filesystem::path& folder);

@@ -29,10 +29,11 @@ const VolumeFormat& format_named(const std::string& name) {
 
 }  // namespace
 
-void write_volume_format(const VoronoiMesh& mesh, const std::filesystem::path& folder, const std::string& format) {
+void write_volume_format(const VoronoiMesh& mesh, const std::filesystem::path& folder, const std::string& format,
+                         const CellQuality* quality) {
   const VolumeFormat& f = format_named(format);
   const std::filesystem::path where = folder / f.output;
-  if (format == "vtu") write_vtu(mesh, where);
+  if (format == "vtu") write_vtu(mesh, where, quality);
   else if (format == "openfoam") write_openfoam_case(mesh, where);
   else if (format == "tough") write_tough_mesh(mesh, where);
   else write_pflotran(mesh, where);
@@ -47,11 +48,11 @@ std::vector<std::string> volume_format_names() {
 }
 
 void write_volume_mesh(const VoronoiMesh& mesh, const std::filesystem::path& folder,
-                       const std::vector<std::string>& formats) {
+                       const std::vector<std::string>& formats, const CellQuality* quality) {
   for (const std::string& name : formats) format_named(name);
   for (const VolumeFormat& f : kFormats) {
     if (std::find(formats.begin(), formats.end(), f.name) != formats.end()) {
-      write_volume_format(mesh, folder, f.name);
+      write_volume_format(mesh, folder, f.name, quality);
     } else {
       std::error_code ignored;
       std::filesystem::remove_all(folder / f.output, ignored);

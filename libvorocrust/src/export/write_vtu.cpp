@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -17,15 +18,16 @@ static_assert(std::endian::native == std::endian::little, "mesh.vtu declares lit
 struct Arrays {
   std::vector<std::int32_t> material;
   std::vector<std::int64_t> seed;
-  std::vector<double> volume;
+  std::vector<double> volume, aspect_ratio;
   std::vector<double> points;
   std::vector<std::int64_t> connectivity, offsets, faces, face_offsets;
   std::vector<std::uint8_t> types;
 };
 
-Arrays make_arrays(const VoronoiMesh& mesh) {
+Arrays make_arrays(const VoronoiMesh& mesh, const CellQuality& quality) {
   constexpr std::uint8_t kPolyhedron = 42;
   Arrays a;
+  for (const CellShape& shape : quality.cells) a.aspect_ratio.push_back(shape.aspect_ratio);
   for (const Point& p : mesh.points) a.points.insert(a.points.end(), {p.x(), p.y(), p.z()});
   std::vector<std::size_t> seen(mesh.points.size(), SIZE_MAX);
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
@@ -79,8 +81,14 @@ class Appended {
 
 }  // namespace
 
-void write_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path) {
-  const Arrays a = make_arrays(mesh);
+void write_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path, const CellQuality* quality) {
+  std::optional<CellQuality> measured;
+  if (quality == nullptr || quality->cells.size() != mesh.cells.size()) {
+    // A mesh without cells has no quality to measure (measure_cell_quality refuses it).
+    measured = mesh.cells.empty() ? CellQuality{} : measure_cell_quality(mesh);
+    quality = &*measured;
+  }
+  const Arrays a = make_arrays(mesh, *quality);
   Appended data;
   std::string xml = "<?xml version=\"1.0\"?>\n"
                     "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
@@ -90,6 +98,7 @@ void write_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path) {
   xml += data.declare(a.material, "Int32", "material");
   xml += data.declare(a.seed, "Int64", "seed");
   xml += data.declare(a.volume, "Float64", "volume");
+  xml += data.declare(a.aspect_ratio, "Float64", "aspect_ratio");
   xml += "</CellData>\n<Points>\n";
   xml += data.declare(a.points, "Float64", "Points", 3);
   xml += "</Points>\n<Cells>\n";
