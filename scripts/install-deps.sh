@@ -17,6 +17,8 @@ packages=(
   python3-vtk9 openfoam
   # the tests' independent region volumes (a voxel flood fill)
   python3-scipy
+  # a decimal-comma locale (de_DE, compiled by localedef) in which the files must not change
+  locales
   # the Python module (pybind11 over Debian's Python 3 and NumPy)
   python3-dev python3-numpy pybind11-dev
   # the FreeCAD workbench and its tests (freecadcmd, and freecad under xvfb-run, below)

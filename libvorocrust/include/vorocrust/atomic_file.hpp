@@ -3,6 +3,8 @@
 // The content goes to a temporary file beside the target, which is renamed over the target only
 // after everything was written and flushed. A failure (an exception from `write`, a full disk)
 // removes the temporary file and throws Error(Output); an earlier file at `path` stays intact.
+// The stream `write` gets is in the classic locale, whatever locale the host application set:
+// numbers read the same on every machine.
 #pragma once
 
 #include <filesystem>

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <locale>
 #include <unistd.h>
 
 #include "vorocrust/error.hpp"
@@ -23,6 +24,7 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
   {
     std::ofstream out(temp, std::ios::binary | std::ios::trunc);
     if (!out) fail(std::strerror(errno));
+    out.imbue(std::locale::classic());
     try {
       write(out);
     } catch (...) {

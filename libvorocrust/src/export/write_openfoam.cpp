@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "export/region_words.hpp"
+#include "export/text_numbers.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
 
@@ -77,7 +78,15 @@ void write_lists(const VoronoiMesh& mesh, const Ordering& o, const fs::path& pol
                            "  nFaces:" + std::to_string(o.faces.size()) + "  nInternalFaces:" + std::to_string(o.internal);
   std::string text = header("vectorField", "constant/polyMesh", "points");
   append(text, "%zu\n(\n", mesh.points.size());
-  for (const Point& p : mesh.points) append(text, "(%.17g %.17g %.17g)\n", p.x(), p.y(), p.z());
+  // Coordinates by io::append_number: printf's %g would follow a host's decimal-comma locale.
+  for (const Point& p : mesh.points) {
+    text += '(';
+    for (int k = 0; k < 3; ++k) {
+      io::append_number(text, p[k]);
+      text += k < 2 ? ' ' : ')';
+    }
+    text += '\n';
+  }
   text += ")\n";
   write_file_atomically(poly / "points", text);
 

@@ -1,7 +1,8 @@
-#include <cstdio>
 #include <iterator>
 #include <ostream>
+#include <string>
 
+#include "export/text_numbers.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/seeds.hpp"
 
@@ -39,13 +40,24 @@ std::string seed_kind_names() {
   return names;
 }
 
+// Numbers by io::append_number, which ignores the locale: printf's would write decimal commas
+// in a host application (FreeCAD, MeshLab) that runs in a decimal-comma locale.
 void write_seeds_csv(const std::vector<Seed>& seeds, const std::filesystem::path& path) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "x,y,z,label,radius,kind\n";
-    char line[256];
+    std::string line;
     for (const Seed& s : seeds) {
-      std::snprintf(line, sizeof line, "%.17g,%.17g,%.17g,%d,%.17g,%s\n", s.position.x(), s.position.y(),
-                    s.position.z(), s.region, s.radius, to_string(s.kind));
+      line.clear();
+      for (int k = 0; k < 3; ++k) {
+        io::append_number(line, s.position[k]);
+        line += ',';
+      }
+      io::append_number(line, static_cast<long long>(s.region));
+      line += ',';
+      io::append_number(line, s.radius);
+      line += ',';
+      line += to_string(s.kind);
+      line += '\n';
       out << line;
     }
   });
