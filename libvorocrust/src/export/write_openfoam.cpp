@@ -94,8 +94,11 @@ void write_lists(const VoronoiMesh& mesh, const Ordering& o, const fs::path& pol
   append(text, "%zu\n(\n", o.faces.size());
   for (std::size_t f : o.faces) {
     const std::vector<Index>& polygon = mesh.faces[f].points;
-    append(text, "%zu(", polygon.size());
-    for (std::size_t k = 0; k < polygon.size(); ++k) append(text, k ? " %u" : "%u", polygon[k]);
+    io::append_number(text, static_cast<long long>(polygon.size()));
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      text += k ? ' ' : '(';
+      io::append_number(text, static_cast<long long>(polygon[k]));
+    }
     text += ")\n";
   }
   text += ")\n";
@@ -103,13 +106,19 @@ void write_lists(const VoronoiMesh& mesh, const Ordering& o, const fs::path& pol
 
   text = header("labelList", "constant/polyMesh", "owner", note);
   append(text, "%zu\n(\n", o.faces.size());
-  for (std::size_t f : o.faces) append(text, "%d\n", mesh.faces[f].owner);
+  for (std::size_t f : o.faces) {
+    io::append_number(text, static_cast<long long>(mesh.faces[f].owner));
+    text += '\n';
+  }
   text += ")\n";
   write_file_atomically(poly / "owner", text);
 
   text = header("labelList", "constant/polyMesh", "neighbour", note);
   append(text, "%zu\n(\n", o.internal);
-  for (std::size_t k = 0; k < o.internal; ++k) append(text, "%d\n", mesh.faces[o.faces[k]].neighbour);
+  for (std::size_t k = 0; k < o.internal; ++k) {
+    io::append_number(text, static_cast<long long>(mesh.faces[o.faces[k]].neighbour));
+    text += '\n';
+  }
   text += ")\n";
   write_file_atomically(poly / "neighbour", text);
 }
@@ -119,7 +128,10 @@ template <class Items, class Item>
 void append_list(std::string& text, const char* name, const char* type, const Items& items, Item item) {
   text += std::string("    ") + name + " List<" + type + ">\n";
   append(text, "%zu\n(\n", items.size());
-  for (const auto& x : items) append(text, "%lld\n", static_cast<long long>(item(x)));
+  for (const auto& x : items) {
+    io::append_number(text, static_cast<long long>(item(x)));
+    text += '\n';
+  }
   text += ")\n;\n";
 }
 
