@@ -591,10 +591,13 @@ Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool la
 // once resolved) holds a few million at its deepest, early on, and shrinks from there. A pool
 // that still doubles level after level once its pieces are a 4096th of their element grows along
 // a curve no stratum protects, where balls cannot converge (surfaces that cross and were kept
-// so, or nearly touch); so does one past the bound that keeps its memory near a gigabyte.
+// so, or nearly touch); so does one past the bound that keeps its memory near a gigabyte. The
+// work doubles with every level, so a small input is stopped at a pool of 20 pieces per face
+// (at least 20 000): a cube pierced by a square took 5 minutes to reach 250 000 pieces.
 void BallRefinement::Impl::check_pool_size(const std::vector<Subface>& pool, const std::vector<std::size_t>& sizes) const {
   const std::size_t depth = sizes.size() - 1;
-  bool runaway = pool.size() > 250'000 && depth >= 12;
+  const std::size_t runaway_pool = std::clamp<std::size_t>(20 * mesh_.num_faces(), 20'000, 250'000);
+  bool runaway = pool.size() > runaway_pool && depth >= 12;
   for (std::size_t d = depth; runaway && d + 4 > depth; --d) runaway = sizes[d] >= 1.8 * static_cast<double>(sizes[d - 1]);
   if (!runaway && pool.size() <= std::max<std::size_t>(8'000'000, 60 * mesh_.num_faces())) return;
   const Subface& where = pool.front();
