@@ -2,6 +2,7 @@
 #include "interior/sample_interior.hpp"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -11,7 +12,9 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <span>
 
+#include "core/split_mix.hpp"
 #include "geometry/ball_tree.hpp"
 #include "refinement/ball_index.hpp"
 #include "refinement/sizing_field.hpp"
@@ -33,6 +36,43 @@ std::pair<double, double> chord(const Point& p, const Point& d, const Point& cen
   const double h = std::sqrt(discriminant);
   return {b - h, b + h};
 }
+
+// Whether z lies outside the balls of `seeds`; `radius` falls to their Lipschitz bound at z.
+bool outside_all(std::span<const Seed> seeds, const Point& z, double L, double& radius) {
+  for (const Seed& q : seeds) {
+    const double d2 = (q.position - z).squaredNorm();
+    if (d2 < q.radius * q.radius) return false;
+    radius = std::min(radius, q.radius + L * std::sqrt(d2));
+  }
+  return true;
+}
+
+// Groups of seeds whose spokes are shot side by side, and their size, chosen among the first
+// seeds of the queue (InteriorSampler::next_batch).
+constexpr std::size_t kSpokeGroups = 16, kSpokeGroup = 16, kSpokeWindow = 2048;
+// Mixed into --seed for the spokes' random streams, which differ from the darts'.
+constexpr std::uint64_t kSpokeStreams = 0x5b0c35eedull;
+
+// Working memory of one thread's spokes.
+struct Scratch {
+  std::vector<BallTree::Sphere> near, ordered;
+  std::vector<std::pair<double, std::uint32_t>> keyed;
+  std::vector<std::pair<double, double>> covered, gaps;
+  std::vector<std::uint32_t> balls;
+};
+
+// Seeds that shoot their spokes one after the other, and what holds them.
+struct SpokeGroup {
+  std::vector<std::uint32_t> seeds;
+  geometry::Box box;
+  double largest_radius = 0;
+};
+
+// What one group's spokes did: the seeds they placed, and how many there were.
+struct SpokeWork {
+  std::vector<Seed> placed;
+  std::uint64_t spokes = 0;
+};
 
 class InteriorSampler {
  public:
@@ -104,49 +144,50 @@ class InteriorSampler {
 
   // A direction uniform on the unit sphere (Archimedes: the height is uniform in [-1, 1]), from
   // two uniform numbers; three normal deviates cost twice as much, a tenth of the sampler.
-  Point random_direction(std::uniform_real_distribution<double>& unit) {
-    const double z = 2 * unit(rng_) - 1;
-    const double phi = 2 * std::numbers::pi * unit(rng_);
+  static Point random_direction(SplitMix64& random) {
+    const double z = 2 * random.unit() - 1;
+    const double phi = 2 * std::numbers::pi * random.unit();
     const double s = std::sqrt(std::max(0.0, 1 - z * z));
     return {s * std::cos(phi), s * std::sin(phi), z};
   }
 
   // Spoke darts from every seed, in order, each until `misses` spokes in a row find no room.
-  // The balls that can reach a seed's spokes are gathered once per seed; seeds its own spokes
-  // place join them.
+  //
+  // Groups of seeds shoot their spokes side by side, a batch of groups at a time (next_batch):
+  // the seeds of a group one after the other, each against the seeds as they stood when the batch
+  // began and those its group placed, from its own random stream. The seeds placed are then
+  // taken group by group, each checked again against those taken before it (one inside another's
+  // ball is dropped, its point being covered; a nearer seed can lower its radius). Batches do not
+  // depend on the number of threads, and neither do the seeds.
   void shoot_spokes() {
     ++stats_.rounds;
     std::deque<std::uint32_t> queue;
     // The given seeds lie on the protecting spheres, where spokes find no room.
     for (std::uint32_t i = given_; i < seeds_.size(); ++i) queue.push_back(i);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::vector<BallTree::Sphere> near;
-    std::size_t popped = 0;
+    std::vector<SpokeGroup> groups;
+    std::vector<SpokeWork> work;
     while (!queue.empty()) {
-      const std::uint32_t from = queue.front();
-      queue.pop_front();
-      if ((++popped & 1023) == 0) check_cancel();
-      const Point z = seeds_[from].position;
-      const double r = seeds_[from].radius;
-      gather_spheres(z, 2 * r, near);
-      // Most spokes end at the first sphere that covers all of them: the spheres nearest to
-      // reaching z first, the big ones among equals.
-      order_nearest_first(z, near);
-      for (int misses = 0; misses < options_.misses;) {
-        ++stats_.spokes;
-        const Point direction = random_direction(unit);
-        const std::optional<double> t = uncovered_point(z, direction, r, 2 * r, unit(rng_), near);
-        std::optional<Seed> seed;
-        if (t) seed = admit(z + *t * direction);
-        if (!seed) {
-          ++misses;
-          continue;
+      check_cancel();
+      next_batch(queue, groups);
+      work.assign(groups.size(), SpokeWork{});
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, groups.size(), 1), [&](const auto& range) {
+        Scratch& scratch = scratch_.local();
+        for (std::size_t g = range.begin(); g != range.end(); ++g) {
+          for (std::uint32_t from : groups[g].seeds) spokes_from(from, scratch, work[g]);
         }
-        misses = 0;
-        add(*seed);
-        near.push_back({seed->position, seed->radius, 0});
-        ++stats_.spoke_seeds;
-        queue.push_back(static_cast<std::uint32_t>(seeds_.size() - 1));
+      });
+      // Admitted against all seeds older than the batch, the seeds placed need checking only
+      // against those taken in it.
+      const std::size_t batch_start = seeds_.size();
+      for (SpokeWork& w : work) {
+        stats_.spokes += w.spokes;
+        for (Seed& seed : w.placed) {
+          const std::span<const Seed> taken(seeds_.begin() + static_cast<std::ptrdiff_t>(batch_start), seeds_.end());
+          if (!outside_all(taken, seed.position, options_.lipschitz, seed.radius)) continue;
+          add(seed);
+          ++stats_.spoke_seeds;
+          queue.push_back(static_cast<std::uint32_t>(seeds_.size() - 1));
+        }
       }
     }
   }
@@ -193,11 +234,13 @@ class InteriorSampler {
 
  private:
   // The seed a point z would be: the region of its nearest surface seed and the radius that
-  // keeps the balls L-Lipschitz; nothing when z lies outside the box or in a ball.
-  std::optional<Seed> admit(const Point& z) const {
+  // keeps the balls L-Lipschitz; nothing when z lies outside the box or in a ball, of the seeds
+  // so far or of `placed` (seeds not yet among them).
+  std::optional<Seed> admit(const Point& z, const std::vector<Seed>& placed = {}) const {
     if ((z.array() < box_.lo.array()).any() || (z.array() > box_.hi.array()).any()) return std::nullopt;
     double radius = kInfinity;
     if (inside_or_bound(interior_tree_, z, radius)) return std::nullopt;
+    if (!outside_all(placed, z, options_.lipschitz, radius)) return std::nullopt;
     // The surface seeds: containment, the Lipschitz bound and the nearest one, in one search.
     const double L = options_.lipschitz;
     bool inside = false;
@@ -241,8 +284,82 @@ class InteriorSampler {
     return inside;
   }
 
+  // The next batch: groups of seeds from the front of the queue, such that the spokes of a
+  // group and the balls they place cannot meet another group's (a spoke from z reaches 2 r_z,
+  // and the ball of a seed it places at most 1.5 r_z, by the Lipschitz bound through z), so
+  // that the groups place what they would one after the other. A seed joins the one group it
+  // comes near, or starts one; seeds near two groups, or that find theirs full or no group left,
+  // keep their places at the front. Groups of neighbours keep each thread's memory warm.
+  void next_batch(std::deque<std::uint32_t>& queue, std::vector<SpokeGroup>& groups) {
+    constexpr double kApart = 3.5;
+    groups.clear();
+    passed_over_.clear();
+    const auto near = [&](const Seed& s, const SpokeGroup& group) {
+      const double margin = kApart * (s.radius + group.largest_radius);
+      if ((s.position.array() < group.box.lo.array() - margin).any() ||
+          (s.position.array() > group.box.hi.array() + margin).any()) {
+        return false;
+      }
+      return std::any_of(group.seeds.begin(), group.seeds.end(), [&](std::uint32_t m) {
+        const double reach = kApart * (s.radius + seeds_[m].radius);
+        return (s.position - seeds_[m].position).squaredNorm() <= reach * reach;
+      });
+    };
+    const std::size_t window = std::min(kSpokeWindow, queue.size());
+    std::size_t k = 0, taken = 0;
+    for (; k < window && taken < kSpokeGroups * kSpokeGroup; ++k) {
+      const std::uint32_t i = queue[k];
+      const Seed& s = seeds_[i];
+      std::size_t meets = groups.size(), count = 0;
+      for (std::size_t g = 0; g < groups.size() && count < 2; ++g) {
+        if (near(s, groups[g])) meets = g, ++count;
+      }
+      if (count == 0 && groups.size() < kSpokeGroups) meets = groups.size(), groups.emplace_back();
+      if (count > 1 || meets == groups.size() || groups[meets].seeds.size() == kSpokeGroup) {
+        passed_over_.push_back(i);
+        continue;
+      }
+      SpokeGroup& group = groups[meets];
+      group.seeds.push_back(i);
+      group.box.include(s.position);
+      group.largest_radius = std::max(group.largest_radius, s.radius);
+      ++taken;
+    }
+    queue.erase(queue.begin(), queue.begin() + static_cast<std::ptrdiff_t>(k));
+    queue.insert(queue.begin(), passed_over_.begin(), passed_over_.end());
+  }
+
+  // One seed's spokes, against the seeds so far and those its group placed (`out`).
+  void spokes_from(std::uint32_t from, Scratch& scratch, SpokeWork& out) const {
+    SplitMix64 random = SplitMix64::stream(options_.seed ^ kSpokeStreams, (std::uint64_t{stats_.rounds} << 32) | from);
+    const Point z = seeds_[from].position;
+    const double r = seeds_[from].radius;
+    std::vector<BallTree::Sphere>& near = scratch.near;
+    gather_spheres(z, 2 * r, near, scratch);
+    for (const Seed& q : out.placed) {
+      if ((q.position - z).norm() < 2 * r + q.radius) near.push_back({q.position, q.radius, 0});
+    }
+    // Most spokes end at the first sphere that covers all of them: the spheres nearest to
+    // reaching z first, the big ones among equals.
+    order_nearest_first(z, near, scratch);
+    for (int misses = 0; misses < options_.misses;) {
+      ++out.spokes;
+      const Point direction = random_direction(random);
+      const std::optional<double> t = uncovered_point(z, direction, r, 2 * r, random.unit(), near, scratch);
+      std::optional<Seed> seed;
+      if (t) seed = admit(z + *t * direction, out.placed);
+      if (!seed) {
+        ++misses;
+        continue;
+      }
+      misses = 0;
+      out.placed.push_back(*seed);
+      near.push_back({seed->position, seed->radius, 0});
+    }
+  }
+
   // Every ball that reaches within `reach` of z: seeds' balls and protecting balls.
-  void gather_spheres(const Point& z, double reach, std::vector<BallTree::Sphere>& out) const {
+  void gather_spheres(const Point& z, double reach, std::vector<BallTree::Sphere>& out, Scratch& scratch) const {
     out.clear();
     for (const BallTree* tree : {&interior_tree_, &surface_tree_}) {
       tree->search(
@@ -253,30 +370,32 @@ class InteriorSampler {
           });
     }
     for (StratumType type : {StratumType::Corner, StratumType::Crease, StratumType::Patch}) {
-      balls_.clear();
-      protecting_.reaching_scaled(type, z, 1 + kBallClearance, reach, balls_);
-      for (std::uint32_t b : balls_) {
+      std::vector<std::uint32_t>& balls = scratch.balls;
+      balls.clear();
+      protecting_.reaching_scaled(type, z, 1 + kBallClearance, reach, balls);
+      for (std::uint32_t b : balls) {
         out.push_back({protecting_[b].site.position, (1 + kBallClearance) * protecting_[b].radius, b});
       }
     }
   }
 
   // The spheres by their distance from reaching z, equals in the order given.
-  void order_nearest_first(const Point& z, std::vector<BallTree::Sphere>& spheres) {
-    keyed_.clear();
+  static void order_nearest_first(const Point& z, std::vector<BallTree::Sphere>& spheres, Scratch& scratch) {
+    std::vector<std::pair<double, std::uint32_t>>& keyed = scratch.keyed;
+    keyed.clear();
     for (std::uint32_t k = 0; k < spheres.size(); ++k) {
-      keyed_.emplace_back((spheres[k].centre - z).norm() - spheres[k].radius, k);
+      keyed.emplace_back((spheres[k].centre - z).norm() - spheres[k].radius, k);
     }
-    std::sort(keyed_.begin(), keyed_.end());
-    ordered_.clear();
-    for (const auto& [gap, k] : keyed_) ordered_.push_back(spheres[k]);
-    spheres.swap(ordered_);
+    std::sort(keyed.begin(), keyed.end());
+    scratch.ordered.clear();
+    for (const auto& [gap, k] : keyed) scratch.ordered.push_back(spheres[k]);
+    spheres.swap(scratch.ordered);
   }
 
   // A point of the spoke z + t d, t in [t_lo, t_hi], that none of the spheres covers and the box
   // holds, chosen uniformly (u in [0, 1)) over that part's length; nothing when no part is left.
   std::optional<double> uncovered_point(const Point& z, const Point& d, double t_lo, double t_hi, double u,
-                                        const std::vector<BallTree::Sphere>& spheres) const {
+                                        const std::vector<BallTree::Sphere>& spheres, Scratch& scratch) const {
     for (int k = 0; k < 3; ++k) {  // the box as a slab per axis
       if (d[k] == 0) continue;
       const double a = (box_.lo[k] - z[k]) / d[k], b = (box_.hi[k] - z[k]) / d[k];
@@ -284,7 +403,7 @@ class InteriorSampler {
       t_hi = std::min(t_hi, std::max(a, b));
     }
     if (!(t_lo < t_hi)) return std::nullopt;
-    std::vector<std::pair<double, double>>& covered = covered_;
+    std::vector<std::pair<double, double>>& covered = scratch.covered;
     covered.clear();
     for (const BallTree::Sphere& s : spheres) {
       const auto [a, b] = chord(z, d, s.centre, s.radius);
@@ -294,7 +413,7 @@ class InteriorSampler {
     }
     std::sort(covered.begin(), covered.end());
     // The free intervals between the merged covered ones, then the point at fraction u of their length.
-    std::vector<std::pair<double, double>>& gaps = gaps_;
+    std::vector<std::pair<double, double>>& gaps = scratch.gaps;
     gaps.clear();
     double reached = t_lo;
     for (const auto& [a, b] : covered) {
@@ -333,10 +452,8 @@ class InteriorSampler {
   BallTree surface_tree_, interior_tree_;
   std::vector<Seed> seeds_;
   std::uint32_t given_ = 0;  // seeds_[0, given_) were given (add_given), not sampled
-  mutable std::vector<std::pair<double, double>> covered_, gaps_;
-  std::vector<std::pair<double, std::uint32_t>> keyed_;
-  std::vector<BallTree::Sphere> ordered_;
-  mutable std::vector<std::uint32_t> balls_;
+  std::vector<std::uint32_t> passed_over_;  // next_batch's
+  tbb::enumerable_thread_specific<Scratch> scratch_;
 };
 
 }  // namespace

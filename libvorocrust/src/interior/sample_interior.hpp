@@ -14,7 +14,10 @@
 // consecutive misses, then spoke darts from every seed until each has missed 100 times in a row:
 // a spoke from z spans [r_z, 2 r_z] in a random direction, and a new seed lands uniformly on the
 // part of it no ball covers. Then the radii are made L-Lipschitz over all seeds; when that shrank
-// a ball the spokes run again from every seed, until no ball shrinks.
+// a ball the spokes run again from every seed, until no ball shrinks. Spokes run on all threads:
+// groups of neighbouring seeds far enough apart that their spokes cannot meet take their turns
+// side by side, each seed drawing from its own random stream, so the seeds are the same on any
+// number of threads.
 // Lattice: first the points of a cubic lattice over the material regions (spacing: the median
 // surface-seed radius, at most --max-size), each with a ball that covers its lattice
 // cube, then the random sampling fills what they leave: the layer near the surface and the
