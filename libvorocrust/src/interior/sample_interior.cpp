@@ -159,11 +159,8 @@ class InteriorSampler {
   // taken group by group, each checked again against those taken before it (one inside another's
   // ball is dropped, its point being covered; a nearer seed can lower its radius). Batches do not
   // depend on the number of threads, and neither do the seeds.
-  void shoot_spokes() {
+  void shoot_spokes(std::deque<std::uint32_t> queue) {
     ++stats_.rounds;
-    std::deque<std::uint32_t> queue;
-    // The given seeds lie on the protecting spheres, where spokes find no room.
-    for (std::uint32_t i = given_; i < seeds_.size(); ++i) queue.push_back(i);
     std::vector<SpokeGroup> groups;
     std::vector<SpokeWork> work;
     while (!queue.empty()) {
@@ -192,14 +189,47 @@ class InteriorSampler {
     }
   }
 
+  // The seeds that shoot spokes first: all sampled ones. (The given seeds lie on the protecting
+  // spheres, where spokes find no room.)
+  std::deque<std::uint32_t> sampled_seeds() const {
+    std::deque<std::uint32_t> queue;
+    for (std::uint32_t i = given_; i < seeds_.size(); ++i) queue.push_back(i);
+    return queue;
+  }
+
+  // The sampled seeds whose spokes may find room the shrinking of `shrunk` (seeds and their radii
+  // before) freed: their own ball shrank, or their shell of spokes, out to 2 r, meets a ball as
+  // it was. The paper shoots from all seeds again; the others' spokes meet the balls they met.
+  std::deque<std::uint32_t> seeds_near(const std::vector<std::pair<std::uint32_t, double>>& shrunk) const {
+    std::vector<char> near(seeds_.size(), 0);
+    for (const auto& [q, old_radius] : shrunk) {
+      const Point& centre = seeds_[q].position;
+      near[q] = 1;
+      interior_tree_.search(
+          centre,
+          [&](double d2, double max_radius, std::uint32_t) {
+            return d2 < (2 * max_radius + old_radius) * (2 * max_radius + old_radius);
+          },
+          [&](const BallTree::Sphere& s) {
+            const double reach = 2 * s.radius + old_radius;
+            if ((s.centre - centre).squaredNorm() < reach * reach) near[s.ball] = 1;
+          });
+    }
+    std::deque<std::uint32_t> queue;
+    for (std::uint32_t i = given_; i < seeds_.size(); ++i) {
+      if (near[i]) queue.push_back(i);
+    }
+    return queue;
+  }
+
   // Shrinks every seed's ball to min over the other seeds q of r_q + L |z - q|. One pass reaches
   // the fixed point: the bound through a chain of seeds is never below the direct one, by the
-  // triangle inequality. Returns whether a ball shrank.
+  // triangle inequality. Returns the seeds whose balls shrank, with their radii before.
   //
   // A sampled seed kept the condition with the surface seeds and the older seeds when it was
   // admitted, and every pass since kept it, so only the seeds that came after it can bound it;
   // the given seeds (the poles) were never admitted and meet all.
-  bool enforce_lipschitz() {
+  std::vector<std::pair<std::uint32_t, double>> enforce_lipschitz() {
     const double L = options_.lipschitz;
     std::vector<double> radii(seeds_.size());
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, static_cast<std::uint32_t>(seeds_.size()), 1024),
@@ -212,16 +242,16 @@ class InteriorSampler {
                           radii[i] = interior_tree_.lipschitz_bound(z, L, given ? 0 : i + 1, r);
                         }
                       });
-    bool shrank = false;
+    std::vector<std::pair<std::uint32_t, double>> shrunk;
     for (std::uint32_t i = 0; i < seeds_.size(); ++i) {
       if (radii[i] < seeds_[i].radius) {
+        shrunk.emplace_back(i, seeds_[i].radius);
         seeds_[i].radius = radii[i];
         interior_tree_.shrink(i, radii[i]);
         ++stats_.lipschitz_shrinks;
-        shrank = true;
       }
     }
-    return shrank;
+    return shrunk;
   }
 
   std::vector<Seed> take() { return std::move(seeds_); }
@@ -467,9 +497,12 @@ std::vector<Seed> sample_interior(const std::vector<Seed>& surface_seeds, const 
   if (options.mode == InteriorMode::Lattice) sampler.place_lattice();
   sampler.throw_darts();
   constexpr int kMaxRounds = 20;
+  std::deque<std::uint32_t> queue = sampler.sampled_seeds();
   for (int round = 0; round < kMaxRounds; ++round) {
-    sampler.shoot_spokes();
-    if (!sampler.enforce_lipschitz()) break;
+    sampler.shoot_spokes(std::move(queue));
+    const auto shrunk = sampler.enforce_lipschitz();
+    if (shrunk.empty()) break;
+    queue = sampler.seeds_near(shrunk);
   }
   return sampler.take();
 }
