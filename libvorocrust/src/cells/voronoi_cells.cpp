@@ -298,15 +298,18 @@ class CellCutter {
     const Point& p = positions_[seed];
     const double scale2 = scale * scale, inverse = 1 / scale;  // powers of two: exact
     cell_.init(-half_side, half_side, -half_side, half_side, -half_side, half_side);
-    double reach2 = 0;  // the farthest seed cut, squared
+    measure_cell();
+    double reach2 = 0;  // the farthest seed tried, squared
     const auto cut_in_order = [&](std::vector<std::pair<double, std::uint32_t>>& candidates) {
       std::sort(candidates.begin(), candidates.end());
       for (const auto& [d2, other] : candidates) {
         if (other == seed) continue;
-        if (d2 > cell_.max_radius_squared() * scale2) return false;
-        const Point d = (positions_[other] - p) * inverse;
-        cell_.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(other));
+        if (d2 > radius2_ * scale2) return false;
         reach2 = d2;
+        const Point d = (positions_[other] - p) * inverse;
+        if (misses_cell(d)) continue;
+        cell_.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(other));
+        measure_cell();
       }
       return true;
     };
@@ -318,9 +321,9 @@ class CellCutter {
       if (all || scratch_.distance2[j] < lower) order_.emplace_back(scratch_.distance2[j], scratch_.near[j]);
     }
     bool more = cut_in_order(order_) && !all;
-    while (more && lower <= cell_.max_radius_squared() * scale2) {
+    while (more && lower <= radius2_ * scale2) {
       const double bound2 =
-          std::nextafter(cell_.max_radius_squared() * scale2, std::numeric_limits<double>::infinity());
+          std::nextafter(radius2_ * scale2, std::numeric_limits<double>::infinity());
       const double upper = std::min(bound2, std::max(4 * lower, 1e-300));
       scratch_.within.clear();
       tree_.radiusSearch(p.data(), upper, scratch_.within, nanoflann::SearchParams(32, 0, false));
@@ -332,7 +335,36 @@ class CellCutter {
       lower = upper;
     }
     extract(cell_, p, out, scratch_, scale);
-    out.reach2 = std::max(reach2, cell_.max_radius_squared() * scale2);
+    out.reach2 = std::max(reach2, radius2_ * scale2);
+  }
+
+  // The bounding box of the cell's vertices and Voro++'s max_radius_squared, after each cut.
+  // Voro++ keeps vertices at twice their coordinates; so does the box.
+  void measure_cell() {
+    radius2_ = cell_.max_radius_squared();
+    box_lo_ = box_hi_ = Point(cell_.pts[0], cell_.pts[1], cell_.pts[2]);
+    for (int v = 1; v < cell_.p; ++v) {
+      const Point x(cell_.pts[3 * v], cell_.pts[3 * v + 1], cell_.pts[3 * v + 2]);
+      box_lo_ = box_lo_.cwiseMin(x);
+      box_hi_ = box_hi_.cwiseMax(x);
+    }
+  }
+
+  // Whether the plane halfway to the seed at offset d leaves every vertex clearly on the seed's
+  // side, so that cutting would change nothing: most seeds within twice the farthest vertex miss
+  // a flat cell, and Voro++ would climb over its vertices to find that out. The box rules out
+  // most; Voro++ takes a vertex within 1e-11 of a plane to lie on it, and the margin is far wider.
+  bool misses_cell(const Point& d) const {
+    const double r2 = d.squaredNorm();
+    const double limit = r2 * (1 - 1e-9) - 1e-9;
+    double support = 0;
+    for (int k = 0; k < 3; ++k) support += std::max(d[k] * box_lo_[k], d[k] * box_hi_[k]);
+    if (support < limit) return true;
+    const double* x = cell_.pts;
+    for (int v = 0; v < cell_.p; ++v, x += 3) {
+      if (d[0] * x[0] + d[1] * x[1] + d[2] * x[2] >= limit) return false;
+    }
+    return true;
   }
 
   // The power of two nearest the distance to the nearest other seed, at most 1 (the frame's
@@ -351,6 +383,8 @@ class CellCutter {
   voro::voronoicell_neighbor cell_;
   Scratch scratch_;
   std::vector<std::pair<double, std::uint32_t>> order_;
+  double radius2_ = 0;
+  Point box_lo_, box_hi_;
 };
 
 // Whether every vertex of `cell` is as near its seed as any other seed is, up to round-off
