@@ -26,12 +26,20 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The parameter interval (t0, t1) in which p + t d (|d| = 1) lies strictly inside a sphere; empty
+// A sphere as a spoke from z sees it: its centre less z, and the power of z, |centre - z|^2 - r^2.
+// Each seed shoots a hundred spokes and more against the same spheres.
+struct SpokeSphere {
+  Point offset;
+  double power;
+  SpokeSphere(const Point& z, const Point& centre, double radius)
+      : offset(centre - z), power(offset.squaredNorm() - radius * radius) {}
+};
+
+// The parameter interval (t0, t1) in which z + t d (|d| = 1) lies strictly inside a sphere; empty
 // (t0 >= t1) when the line misses it.
-std::pair<double, double> chord(const Point& p, const Point& d, const Point& centre, double radius) {
-  const Point to_centre = centre - p;
-  const double b = d.dot(to_centre);
-  const double discriminant = b * b - (to_centre.squaredNorm() - radius * radius);
+std::pair<double, double> chord(const Point& d, const SpokeSphere& s) {
+  const double b = d.dot(s.offset);
+  const double discriminant = b * b - s.power;
   if (!(discriminant > 0)) return {0, 0};
   const double h = std::sqrt(discriminant);
   return {b - h, b + h};
@@ -56,6 +64,7 @@ constexpr std::uint64_t kSpokeStreams = 0x5b0c35eedull;
 // Working memory of one thread's spokes.
 struct Scratch {
   std::vector<BallTree::Sphere> near, ordered;
+  std::vector<SpokeSphere> around;
   std::vector<std::pair<double, std::uint32_t>> keyed;
   std::vector<std::pair<double, double>> covered, gaps;
   std::vector<std::uint32_t> balls;
@@ -372,10 +381,13 @@ class InteriorSampler {
     // Most spokes end at the first sphere that covers all of them: the spheres nearest to
     // reaching z first, the big ones among equals.
     order_nearest_first(z, near, scratch);
+    std::vector<SpokeSphere>& around = scratch.around;
+    around.clear();
+    for (const BallTree::Sphere& s : near) around.emplace_back(z, s.centre, s.radius);
     for (int misses = 0; misses < options_.misses;) {
       ++out.spokes;
       const Point direction = random_direction(random);
-      const std::optional<double> t = uncovered_point(z, direction, r, 2 * r, random.unit(), near, scratch);
+      const std::optional<double> t = uncovered_point(z, direction, r, 2 * r, random.unit(), around, scratch);
       std::optional<Seed> seed;
       if (t) seed = admit(z + *t * direction, out.placed);
       if (!seed) {
@@ -384,7 +396,7 @@ class InteriorSampler {
       }
       misses = 0;
       out.placed.push_back(*seed);
-      near.push_back({seed->position, seed->radius, 0});
+      around.emplace_back(z, seed->position, seed->radius);
     }
   }
 
@@ -425,7 +437,7 @@ class InteriorSampler {
   // A point of the spoke z + t d, t in [t_lo, t_hi], that none of the spheres covers and the box
   // holds, chosen uniformly (u in [0, 1)) over that part's length; nothing when no part is left.
   std::optional<double> uncovered_point(const Point& z, const Point& d, double t_lo, double t_hi, double u,
-                                        const std::vector<BallTree::Sphere>& spheres, Scratch& scratch) const {
+                                        const std::vector<SpokeSphere>& spheres, Scratch& scratch) const {
     for (int k = 0; k < 3; ++k) {  // the box as a slab per axis
       if (d[k] == 0) continue;
       const double a = (box_.lo[k] - z[k]) / d[k], b = (box_.hi[k] - z[k]) / d[k];
@@ -435,8 +447,8 @@ class InteriorSampler {
     if (!(t_lo < t_hi)) return std::nullopt;
     std::vector<std::pair<double, double>>& covered = scratch.covered;
     covered.clear();
-    for (const BallTree::Sphere& s : spheres) {
-      const auto [a, b] = chord(z, d, s.centre, s.radius);
+    for (const SpokeSphere& s : spheres) {
+      const auto [a, b] = chord(d, s);
       if (!(a < b && b > t_lo && a < t_hi)) continue;
       if (a <= t_lo && b >= t_hi) return std::nullopt;  // one sphere covers it all: most spokes end here
       covered.emplace_back(std::max(a, t_lo), std::min(b, t_hi));
