@@ -3,6 +3,7 @@
 // seeds keep clear of the balls' spheres, the cap seeds lie on them; radii stay L-Lipschitz;
 // every mode gives cells bounded by exactly the output surface, with no highly skew face.
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <map>
@@ -15,7 +16,6 @@
 #include "vorocrust/face_skewness.hpp"
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/read_mesh.hpp"
-#include "vorocrust/threads.hpp"
 
 namespace vorocrust {
 namespace {
@@ -123,15 +123,18 @@ TEST(SampleInterior, RadiiAreLipschitzAndSeedsOutsideEachOthersBalls) {
 }
 
 // The spokes run side by side in batches that do not depend on the thread count: one thread
-// gives the seeds that all cores gave.
+// gives the seeds that all cores gave. options.threads alone holds the run to one thread, with
+// no ThreadLimit (a program linking the library may have none).
 TEST(SampleInterior, SameSeedSameSeedsOnOneThread) {
   MeshOptions options;
   options.seed = 3;
   options.threads = 1;
-  const MeshResult again = [&] {
-    const ThreadLimit one(1);
-    return generate_mesh(joint(), options);
-  }();
+  int most_threads = 0;
+  const MeshResult again = generate_mesh(joint(), options, [&](const ProgressUpdate&) {
+    most_threads = std::max(most_threads, tbb::this_task_arena::max_concurrency());
+    return true;
+  });
+  EXPECT_EQ(most_threads, 1);
   const MeshResult& r = run(InteriorMode::Random);
   ASSERT_GT(r.interior.spoke_seeds, 0u);
   ASSERT_EQ(again.seeds.size(), r.seeds.size());

@@ -90,7 +90,7 @@ struct MeshOptions {
   int cvt_iterations = 20;  // Lloyd iterations of InteriorMode::Cvt
   Stage stop_after = Stage::Cells;
   std::uint64_t seed = 0;  // random seed; equal seeds give equal meshes
-  int threads = 0;         // 0 = all hardware threads
+  int threads = 0;         // worker threads generate_mesh runs on, 0 = all hardware threads
 
   // Throws Error(Usage) naming the first option out of its range.
   void check() const;

@@ -1,3 +1,5 @@
+#include <tbb/task_arena.h>
+
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -71,10 +73,21 @@ class PhaseClock {
   std::vector<PhaseTiming>& timings_;
 };
 
+MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, const ProgressCallback& progress);
+
 }  // namespace
 
 MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, const ProgressCallback& progress) {
   options.check();
+  // Every parallel stage runs in this arena: a program that asks for n threads gets at most n,
+  // with or without a ThreadLimit of its own.
+  tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
+  return arena.execute([&] { return run_pipeline(model, options, progress); });
+}
+
+namespace {
+
+MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, const ProgressCallback& progress) {
   MeshResult result;
   PhaseClock clock(result.timings);
   // The domain: the model, in its box when it has open sheets or the caller gives one.
@@ -244,5 +257,7 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   result.cell_quality = clock("cell quality", [&] { return measure_cell_quality(result.cells, quality_options); });
   return result;
 }
+
+}  // namespace
 
 }  // namespace vorocrust
