@@ -14,8 +14,11 @@ namespace vorocrust {
 void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
   static std::atomic<unsigned> counter{0};
   const std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  const std::filesystem::path temp =
-      parent / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  // Appended piece by piece: GCC 12 warns of an overlap (-Wrestrict) in "." + string.
+  std::string name = ".";
+  name += path.filename().string();
+  name += ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  const std::filesystem::path temp = parent / name;
   const auto fail = [&](const std::string& why) {
     std::error_code ignored;
     std::filesystem::remove(temp, ignored);
