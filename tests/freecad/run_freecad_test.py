@@ -6,7 +6,8 @@
   gui: installs it with scripts/install-freecad-addon.sh into the default place under a
        private HOME, runs `xvfb-run freecad freecad_gui_test.py` (QTWEBENGINE_DISABLE_SANDBOX=1).
 
-Either way HOME is WORK/home, so FreeCAD's configuration and caches stay out of the real home.
+Either way HOME is WORK/home and TMPDIR WORK/tmp, so FreeCAD's configuration, caches and
+temporary files stay out of the real home and /tmp.
 The script inside FreeCAD exits non-zero on any failure and leaves a JSON summary; this driver
 then reads the written mesh.vtu with VTK's own reader (python3-vtk9) and checks its cells and
 volumes against the summary.
@@ -37,7 +38,10 @@ class FreeCAD(unittest.TestCase):
         home = os.path.join(WORK, "home")
         os.makedirs(home)
         summary = os.path.join(WORK, "summary.json")
-        env = dict(os.environ, HOME=home, VOROCRUST_TEST_WORK=WORK, VOROCRUST_TEST_SUMMARY=summary)
+        # FreeCAD leaves start-page thumbnails in its temporary folder: WORK's, removed at the end.
+        tmp = os.path.join(WORK, "tmp")
+        os.makedirs(tmp)
+        env = dict(os.environ, HOME=home, TMPDIR=tmp, VOROCRUST_TEST_WORK=WORK, VOROCRUST_TEST_SUMMARY=summary)
         env.pop("FREECAD_USER_DATA", None)
         env.pop("PYTHONPATH", None)  # the add-on must bring its own module
         if MODE == "app":
