@@ -103,9 +103,32 @@ struct Assembly {
     return d == kNoCell || d > static_cast<std::int32_t>(c);
   }
 
-  // Every face once, owned by the lower cell; each cell's face list. False in failed[c] where a
-  // cell and its neighbour do not see their common face alike.
-  void build(VoronoiMesh& mesh, std::vector<char>& failed) const {
+  // Marks failed[c] where cell c and a neighbour do not see their common face alike: the owner
+  // finds no face toward it on the other side, or the other finds its own face not the owner's
+  // run backwards. Before build, which allocates every face, so that a weld that fails costs no
+  // mesh.
+  void check(std::vector<char>& failed) const {
+    tbb::parallel_for(std::size_t{0}, cell_seeds.size(), [&](std::size_t c) {
+      const CellFaces& mine = faces[c];
+      const Index seed = cell_seeds[c];
+      for (std::size_t f = 0; f < mine.num_faces() && !failed[c]; ++f) {
+        const std::int32_t d = cell_of_seed[static_cast<std::size_t>(mine.neighbours[f])];
+        if (d == kNoCell) continue;
+        const CellFaces& theirs = faces[static_cast<std::size_t>(d)];
+        const std::optional<std::size_t> g = face_toward(theirs, seed);
+        if (owns(c, mine.neighbours[f])) {
+          failed[c] = !g;
+          continue;
+        }
+        const std::size_t size = mine.starts[f + 1] - mine.starts[f];
+        failed[c] = !g || theirs.starts[*g + 1] - theirs.starts[*g] != size ||
+                    !is_reverse(mine.points.data() + mine.starts[f], theirs.points.data() + theirs.starts[*g], size);
+      }
+    });
+  }
+
+  // Every face once, owned by the lower cell; each cell's face list. The cells passed check.
+  void build(VoronoiMesh& mesh) const {
     const std::size_t n = cell_seeds.size();
     std::vector<std::size_t> first_face(n + 1, 0);
     for (std::size_t c = 0; c < n; ++c) {
@@ -135,20 +158,12 @@ struct Assembly {
           face.neighbour_seed = across;
           face.regions = {cell.region, seeds[across].region};
           cell.faces.push_back(static_cast<Index>(next++));
-          if (face.neighbour != kNoCell && !face_toward(faces[static_cast<std::size_t>(face.neighbour)], cell.seed)) {
-            failed[c] = 1;
-          }
           continue;
         }
         const auto d = static_cast<std::size_t>(cell_of_seed[across]);
-        const std::optional<std::size_t> g = face_toward(faces[d], cell.seed);
-        if (!g || faces[d].starts[*g + 1] - faces[d].starts[*g] != size ||
-            !is_reverse(polygon, faces[d].points.data() + faces[d].starts[*g], size)) {
-          failed[c] = 1;
-          continue;
-        }
+        const std::size_t g = *face_toward(faces[d], cell.seed);
         std::size_t id = first_face[d];
-        for (std::size_t k = 0; k < *g; ++k) id += owns(d, faces[d].neighbours[k]);
+        for (std::size_t k = 0; k < g; ++k) id += owns(d, faces[d].neighbours[k]);
         cell.faces.push_back(static_cast<Index>(id));
       }
     });
@@ -366,15 +381,14 @@ std::vector<char> weld_and_assemble(const std::vector<Seed>& seeds, const Frame&
   mesh = VoronoiMesh{};
   mesh.points = std::move(welded.points);
   if (closed) {
-    assembly.build(mesh, failed);
+    assembly.check(failed);
     // Cells that disagree only by points splitting an edge on one side agree without them.
-    const bool disagree = std::count(failed.begin(), failed.end(), 1) > 0;
-    if (disagree && cells::drop_edge_points(assembly.faces, mesh.points.size()) > 0) {
+    const auto disagree = [&] { return std::count(failed.begin(), failed.end(), 1) > 0; };
+    if (disagree() && cells::drop_edge_points(assembly.faces, mesh.points.size()) > 0) {
       std::fill(failed.begin(), failed.end(), 0);
-      mesh.faces.clear();
-      mesh.cells.clear();
-      assembly.build(mesh, failed);
+      assembly.check(failed);
     }
+    if (!disagree()) assembly.build(mesh);
   }
   return failed;
 }
