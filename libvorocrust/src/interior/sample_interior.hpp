@@ -14,7 +14,9 @@
 // consecutive misses, then spoke darts from every seed until each has missed 100 times in a row:
 // a spoke from z spans [r_z, 2 r_z] in a random direction, and a new seed lands uniformly on the
 // part of it no ball covers. Then the radii are made L-Lipschitz over all seeds; when that shrank
-// a ball the spokes run again from every seed, until no ball shrinks. Spokes run on all threads:
+// a ball the spokes run again from the seeds whose own ball shrank or whose spokes reach a shrunk
+// ball as it was (the paper's Q refilled with every seed; the others would meet the balls they
+// met), until no ball shrinks. Spokes run on all threads:
 // groups of neighbouring seeds far enough apart that their spokes cannot meet take their turns
 // side by side, each seed drawing from its own random stream, so the seeds are the same on any
 // number of threads.
