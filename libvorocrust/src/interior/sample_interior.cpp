@@ -209,23 +209,37 @@ class InteriorSampler {
   // The sampled seeds whose spokes may find room the shrinking of `shrunk` (seeds and their radii
   // before) freed: their own ball shrank, or their shell of spokes, out to 2 r, meets a ball as
   // it was. The paper shoots from all seeds again; the others' spokes meet the balls they met.
+  // Each seed asks a tree of the shrunk balls as they were: searched from the shrunk balls, the
+  // tree of all seeds bounds its nodes by the outside seeds' large radii, and prunes little.
   std::deque<std::uint32_t> seeds_near(const std::vector<std::pair<std::uint32_t, double>>& shrunk) const {
+    BallTree before;
     std::vector<char> near(seeds_.size(), 0);
-    for (const auto& [q, old_radius] : shrunk) {
-      const Point& centre = seeds_[q].position;
+    for (std::uint32_t k = 0; k < shrunk.size(); ++k) {
+      const auto [q, old_radius] = shrunk[k];
+      before.insert(seeds_[q].position, old_radius, k);
       near[q] = 1;
-      interior_tree_.search(
-          centre,
-          [&](double d2, double max_radius, std::uint32_t) {
-            return d2 < (2 * max_radius + old_radius) * (2 * max_radius + old_radius);
-          },
-          [&](const BallTree::Sphere& s) {
-            const double reach = 2 * s.radius + old_radius;
-            if ((s.centre - centre).squaredNorm() < reach * reach) near[s.ball] = 1;
-          });
     }
+    const auto first = static_cast<std::uint32_t>(given_);
+    const auto end = static_cast<std::uint32_t>(seeds_.size());
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(first, end, 1024), [&](const auto& range) {
+      for (std::uint32_t i = range.begin(); i != range.end(); ++i) {
+        if (near[i]) continue;
+        const Point& z = seeds_[i].position;
+        const double reach = 2 * seeds_[i].radius;
+        bool meets = false;
+        before.search(
+            z,
+            [&](double d2, double max_radius, std::uint32_t) {
+              return !meets && d2 < (reach + max_radius) * (reach + max_radius);
+            },
+            [&](const BallTree::Sphere& s) {
+              meets = meets || (s.centre - z).squaredNorm() < (reach + s.radius) * (reach + s.radius);
+            });
+        near[i] = meets;
+      }
+    });
     std::deque<std::uint32_t> queue;
-    for (std::uint32_t i = given_; i < seeds_.size(); ++i) {
+    for (std::uint32_t i = first; i < end; ++i) {
       if (near[i]) queue.push_back(i);
     }
     return queue;
