@@ -363,9 +363,10 @@ std::vector<CutFace> GrowingCells::skew_faces(double threshold) {
 namespace {
 
 // Welds the cells `raw` of `cell_seeds` (cell_of_seed: per seed, its index among them or kNoCell)
-// and assembles them into `mesh`; marks in the result each cell that is not closed after welding
-// or sees a common face differently from its neighbour. Faces toward seeds that have no cell here
-// are boundary faces, checked by no one.
+// and marks in the result each cell that is not closed after welding or sees a common face
+// differently from its neighbour; when none is marked, assembles them into `mesh` (else `mesh`
+// holds the welded points only). Faces toward seeds that have no cell here are boundary faces,
+// checked by no one.
 std::vector<char> weld_and_assemble(const std::vector<Seed>& seeds, const Frame& frame, const std::vector<RawCell>& raw,
                                     const std::vector<Index>& cell_seeds, const std::vector<std::int32_t>& cell_of_seed,
                                     const std::vector<double>& tolerance, VoronoiMesh& mesh, bool& closed) {
