@@ -63,7 +63,7 @@ constexpr std::uint64_t kSpokeStreams = 0x5b0c35eedull;
 
 // Working memory of one thread's spokes.
 struct Scratch {
-  std::vector<BallTree::Sphere> near, ordered;
+  std::vector<BallTree::Sphere> near;
   std::vector<SpokeSphere> around;
   std::vector<std::pair<double, std::uint32_t>> keyed;
   std::vector<std::pair<double, double>> covered, gaps;
@@ -160,7 +160,8 @@ class InteriorSampler {
     return {s * std::cos(phi), s * std::sin(phi), z};
   }
 
-  // Spoke darts from every seed, in order, each until `misses` spokes in a row find no room.
+  // Spoke darts from every seed of `queue`, and from the seeds they place, each until `misses`
+  // spokes in a row find no room.
   //
   // Groups of seeds shoot their spokes side by side, a batch of groups at a time (next_batch):
   // the seeds of a group one after the other, each against the seeds as they stood when the batch
@@ -394,10 +395,8 @@ class InteriorSampler {
     }
     // Most spokes end at the first sphere that covers all of them: the spheres nearest to
     // reaching z first, the big ones among equals.
-    order_nearest_first(z, near, scratch);
     std::vector<SpokeSphere>& around = scratch.around;
-    around.clear();
-    for (const BallTree::Sphere& s : near) around.emplace_back(z, s.centre, s.radius);
+    nearest_first(z, near, around, scratch);
     for (int misses = 0; misses < options_.misses;) {
       ++out.spokes;
       const Point direction = random_direction(random);
@@ -435,17 +434,18 @@ class InteriorSampler {
     }
   }
 
-  // The spheres by their distance from reaching z, equals in the order given.
-  static void order_nearest_first(const Point& z, std::vector<BallTree::Sphere>& spheres, Scratch& scratch) {
+  // The spheres as spokes from z see them (`out`), by their distance from reaching z, equals in
+  // the order given.
+  static void nearest_first(const Point& z, const std::vector<BallTree::Sphere>& spheres,
+                            std::vector<SpokeSphere>& out, Scratch& scratch) {
     std::vector<std::pair<double, std::uint32_t>>& keyed = scratch.keyed;
     keyed.clear();
     for (std::uint32_t k = 0; k < spheres.size(); ++k) {
       keyed.emplace_back((spheres[k].centre - z).norm() - spheres[k].radius, k);
     }
     std::sort(keyed.begin(), keyed.end());
-    scratch.ordered.clear();
-    for (const auto& [gap, k] : keyed) scratch.ordered.push_back(spheres[k]);
-    spheres.swap(scratch.ordered);
+    out.clear();
+    for (const auto& [gap, k] : keyed) out.emplace_back(z, spheres[k].centre, spheres[k].radius);
   }
 
   // A point of the spoke z + t d, t in [t_lo, t_hi], that none of the spheres covers and the box
