@@ -9,39 +9,20 @@
 #include <random>
 
 #include "geometry/closest_point.hpp"
+#include "geometry/curve_order.hpp"
 #include "geometry/surface_sampling.hpp"
 
 namespace vorocrust {
 
 namespace {
 
-// Spreads the low 21 bits of x three apart, for interleaving three coordinates.
-std::uint64_t spread_bits(std::uint64_t x) {
-  x &= 0x1fffff;
-  x = (x | x << 32) & 0x1f00000000ffffull;
-  x = (x | x << 16) & 0x1f0000ff0000ffull;
-  x = (x | x << 8) & 0x100f00f00f00f00full;
-  x = (x | x << 4) & 0x10c30c30c30c30c3ull;
-  x = (x | x << 2) & 0x1249249249249249ull;
-  return x;
-}
-
 // Orders points along a Morton curve: neighbours in the list are mostly neighbours in space, so
 // consecutive nearest-face searches walk the same tree nodes and faces while they are cached.
 void sort_along_curve(std::vector<Point>& points) {
-  geometry::Box box;
-  for (const Point& p : points) box.include(p);
-  const Point scale = (box.hi - box.lo).cwiseMax(1e-300).cwiseInverse() * double((1 << 21) - 1);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Point q = (points[i] - box.lo).cwiseProduct(scale);
-    keys[i] = {spread_bits(static_cast<std::uint64_t>(q.x())) | spread_bits(static_cast<std::uint64_t>(q.y())) << 1 |
-                   spread_bits(static_cast<std::uint64_t>(q.z())) << 2,
-               static_cast<std::uint32_t>(i)};
-  }
-  std::sort(keys.begin(), keys.end());
+  const std::vector<std::uint32_t> order =
+      geometry::curve_order(points.size(), [&](std::size_t i) -> const Point& { return points[i]; });
   std::vector<Point> sorted(points.size());
-  for (std::size_t i = 0; i < keys.size(); ++i) sorted[i] = points[keys[i].second];
+  for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = points[order[i]];
   points = std::move(sorted);
 }
 
