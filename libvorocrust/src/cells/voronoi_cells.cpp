@@ -12,6 +12,7 @@
 #include <tuple>
 #include <voro++.hh>
 
+#include "geometry/curve_order.hpp"
 #include "refinement/point_cloud.hpp"
 #include "vorocrust/error.hpp"
 
@@ -24,7 +25,6 @@ struct Scratch {
   std::vector<std::uint32_t> near;
   std::vector<double> distance2;
   std::vector<std::uint32_t> order, rank, faces_order;
-  std::vector<std::pair<std::uint32_t, double>> within;
 };
 
 // Voro++ numbers a cell's vertices and faces in the order its cuts met them, and a cut that
@@ -269,11 +269,6 @@ class CellCutter {
   // `reach`: half the side of the cube bigger than all seeds; `variant` scales it (and the local
   // cube) by 1.375^variant. `at_local_scale`: see below.
   void cut(Index seed, double reach, int variant, bool at_local_scale, RawCell& out) {
-    const Point& p = positions_[seed];
-    const std::size_t wanted = std::min<std::size_t>(kNearestFirst, positions_.size());
-    scratch_.near.resize(wanted);
-    scratch_.distance2.resize(wanted);
-    const std::size_t found = tree_.knnSearch(p.data(), wanted, scratch_.near.data(), scratch_.distance2.data());
     const double growth = std::pow(1.375, variant);
     // Voro++ decides what lies on a plane with an absolute tolerance, which the frame sets to
     // about 1e-11 of the seed spacing. Where seeds crowd far closer than the mean (a thin part of
@@ -283,18 +278,42 @@ class CellCutter {
     // is cut as elsewhere (a cube of the frame's units so big would lose cuts to round-off). Only
     // the assembly's fallbacks do so: neighbours cut at two scales round their shared vertices
     // apart.
-    const double scale = at_local_scale ? local_scale(seed, found) : 1;
+    const double scale = at_local_scale ? local_scale(seed) : 1;
     if (scale < 1) {
-      cut_from(seed, found, kLocalCube * growth, scale, out);
+      cut_from(seed, kLocalCube * growth, scale, out);
       if (std::none_of(out.neighbours.begin(), out.neighbours.end(), [](std::int32_t n) { return n < 0; })) return;
     }
-    cut_from(seed, found, reach * growth, 1, out);
+    cut_from(seed, reach * growth, 1, out);
   }
 
  private:
-  // The cell cut from the cube of half-side `half_side` in units of `scale`; the k-d tree's
-  // `found` nearest seeds are in scratch_.
-  void cut_from(Index seed, std::size_t found, double half_side, double scale, RawCell& out) {
+  // Collects the seeds at squared distances in [lower, upper) as (squared distance, seed), and
+  // counts those below upper.
+  class Shell {
+   public:
+    using DistanceType = double;
+    using IndexType = std::uint32_t;
+    Shell(double lower, double upper, std::vector<std::pair<double, std::uint32_t>>& out)
+        : lower_(lower), upper_(upper), out_(out) {}
+    bool full() const { return true; }
+    bool addPoint(double d2, std::uint32_t seed) {
+      if (d2 < upper_) {
+        ++within_;
+        if (d2 >= lower_) out_.emplace_back(d2, seed);
+      }
+      return true;
+    }
+    double worstDist() const { return upper_; }
+    std::size_t within() const { return within_; }
+
+   private:
+    double lower_, upper_;
+    std::vector<std::pair<double, std::uint32_t>>& out_;
+    std::size_t within_ = 0;
+  };
+
+  // The cell cut from the cube of half-side `half_side` in units of `scale`.
+  void cut_from(Index seed, double half_side, double scale, RawCell& out) {
     const Point& p = positions_[seed];
     const double scale2 = scale * scale, inverse = 1 / scale;  // powers of two: exact
     cell_.init(-half_side, half_side, -half_side, half_side, -half_side, half_side);
@@ -313,29 +332,33 @@ class CellCutter {
       }
       return true;
     };
-    const bool all = found == positions_.size();
-    // Every seed nearer than `lower` (squared) has had its turn.
-    double lower = found > 0 ? scratch_.distance2[found - 1] : 0;
-    order_.clear();
-    for (std::size_t j = 0; j < found; ++j) {  // those at the farthest distance may have twins the query left out
-      if (all || scratch_.distance2[j] < lower) order_.emplace_back(scratch_.distance2[j], scratch_.near[j]);
-    }
-    bool more = cut_in_order(order_) && !all;
-    while (more && lower <= radius2_ * scale2) {
-      const double bound2 =
-          std::nextafter(radius2_ * scale2, std::numeric_limits<double>::infinity());
-      const double upper = std::min(bound2, std::max(4 * lower, 1e-300));
-      scratch_.within.clear();
-      tree_.radiusSearch(p.data(), upper, scratch_.within, nanoflann::SearchParams(32, 0, false));
+    // Seeds in shells about the seed, nearest first. The first shell reaches as far as the last
+    // cell cut needed (neighbouring cells in a run are alike in size); each next one twice as far
+    // as the one before, but no further than this cell needs. Where the cuts stop does not depend
+    // on the shells, only how many searches find the seeds.
+    double lower = 0;  // every seed nearer than this (squared) has had its turn
+    const double first = guess2_ > 0 ? guess2_ : first_shell2(p);
+    for (bool more = true; more && lower <= radius2_ * scale2;) {
+      const double bound2 = std::nextafter(radius2_ * scale2, std::numeric_limits<double>::infinity());
+      const double upper = std::min(bound2, lower > 0 ? std::max(4 * lower, 1e-300) : first);
       order_.clear();
-      for (const auto& [other, d2] : scratch_.within) {
-        if (d2 >= lower) order_.emplace_back(d2, other);
-      }
-      more = cut_in_order(order_) && scratch_.within.size() < positions_.size();
+      Shell shell(lower, upper, order_);
+      tree_.findNeighbors(shell, p.data(), nanoflann::SearchParams(32, 0, false));
+      more = cut_in_order(order_) && shell.within() < positions_.size();
       lower = upper;
     }
     extract(cell_, p, out, scratch_, scale);
     out.reach2 = std::max(reach2, radius2_ * scale2);
+    if (scale == 1) guess2_ = radius2_;
+  }
+
+  // For a cell with no cell cut before it: the squared distance of the kNearestFirst-th seed.
+  double first_shell2(const Point& p) {
+    const std::size_t wanted = std::min<std::size_t>(kNearestFirst, positions_.size());
+    scratch_.near.resize(wanted);
+    scratch_.distance2.resize(wanted);
+    const std::size_t found = tree_.knnSearch(p.data(), wanted, scratch_.near.data(), scratch_.distance2.data());
+    return found > 0 ? std::nextafter(scratch_.distance2[found - 1], std::numeric_limits<double>::infinity()) : 1e-300;
   }
 
   // The bounding box of the cell's vertices and Voro++'s max_radius_squared, after each cut.
@@ -370,7 +393,11 @@ class CellCutter {
   // The power of two nearest the distance to the nearest other seed, at most 1 (the frame's
   // spacing): a seed added nearer than that is within the cell's reach, so the scale of a cell
   // that cells_reached passes over stays as it was.
-  double local_scale(Index seed, std::size_t found) const {
+  double local_scale(Index seed) {
+    const std::size_t wanted = std::min<std::size_t>(kNearestFirst, positions_.size());
+    scratch_.near.resize(wanted);
+    scratch_.distance2.resize(wanted);
+    const std::size_t found = tree_.knnSearch(positions_[seed].data(), wanted, scratch_.near.data(), scratch_.distance2.data());
     for (std::size_t j = 0; j < found; ++j) {
       if (scratch_.near[j] == seed || !(scratch_.distance2[j] > 0)) continue;
       return std::min(1.0, std::exp2(std::round(std::log2(scratch_.distance2[j]) / 2)));
@@ -384,6 +411,7 @@ class CellCutter {
   Scratch scratch_;
   std::vector<std::pair<double, std::uint32_t>> order_;
   double radius2_ = 0;
+  double guess2_ = 0;  // the squared reach the last cell cut at scale 1 needed
   Point box_lo_, box_hi_;
 };
 
@@ -419,10 +447,15 @@ void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vec
   // The initial cell: a cube about each seed bigger than all seeds, so that only a cell no seed
   // bounds keeps one of its walls.
   const double base = bounds.diagonal().norm() + 1;
+  // Cut along a curve through the seeds: a cutter's next cell is mostly a neighbour of its last,
+  // like it in size (the first shell of seeds it fetches) and in the tree nodes it visits.
+  const std::vector<std::uint32_t> along = geometry::curve_order(
+      which.size(), [&](std::size_t k) -> const Point& { return positions[cell_seeds[which[k]]]; });
   std::vector<Index> unbounded(which.size(), std::numeric_limits<Index>::max());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 256), [&](const auto& range) {
     CellCutter cutter(positions, tree);
-    for (std::size_t k = range.begin(); k != range.end(); ++k) {
+    for (std::size_t j = range.begin(); j != range.end(); ++j) {
+      const std::size_t k = along[j];
       const Index seed = cell_seeds[which[k]];
       RawCell& out = cells[which[k]];
       cutter.cut(seed, base, variant, false, out);
