@@ -11,8 +11,9 @@
 //   on one side of a face); where they still disagree, they and their neighbours are cut again,
 //   each checked to hold nothing nearer another seed, and the tolerance rises for the whole set,
 //   by tens up to 1e-6;
-// - every face is listed once. Its polygon's normal (right-hand rule) points from its owner cell
-//   to the other side; between two material cells the owner is the lower cell index;
+// - every face is listed once, in the order of its owner cell. Its polygon's normal (right-hand
+//   rule) points from its owner cell to the other side; between two material cells the owner is
+//   the lower cell index. Points are numbered in the order the faces first use them;
 // - every cell is closed (each edge of the cell used by exactly two of its faces, once in each
 //   direction) and convex.
 // Cells are numbered in seed order; every point sits at equal distance from the seeds of the
