@@ -25,7 +25,7 @@ RegionWords::RegionWords(const VoronoiMesh& mesh) {
   for (std::int32_t label : labels) {
     std::string word = word_of(region_name(mesh, label));
     if (!taken.insert(word).second) {
-      word += "_" + std::to_string(label);
+      word.append("_").append(std::to_string(label));  // not "_" + ...: GCC 12 warns falsely (-Wrestrict)
       taken.insert(word);
     }
     words_[label] = word;
