@@ -409,32 +409,14 @@ std::vector<char> weld_and_assemble(const std::vector<Seed>& seeds, const Frame&
   return failed;
 }
 
-// The cells with an edge shorter than kNearlyDegenerate of its empty sphere's radius (welding
-// unites points within 1e-9 of it, and its fallbacks within up to 1e-6): where Voro++ resolved
+// The cells with an edge shorter than kNearlyDegenerate of its vertices' empty spheres (welding
+// unites points within 1e-9 of them, and its fallbacks within up to 1e-6): where Voro++ resolved
 // a degenerate vertex into a tiny edge, which a neighbour may have resolved otherwise.
-std::vector<std::size_t> near_degenerate(const std::vector<RawCell>& raw, const std::vector<Index>& cell_seeds,
-                                         const Frame& frame) {
+std::vector<std::size_t> near_degenerate(const std::vector<RawCell>& raw) {
   constexpr double kNearlyDegenerate = 1e-6;
-  std::vector<char> marked(raw.size(), 0);
-  tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
-    const RawCell& cell = raw[c];
-    const Point& seed = frame.normalized[cell_seeds[c]];
-    for (std::size_t f = 0; f < cell.num_faces() && !marked[c]; ++f) {
-      const std::uint32_t begin = cell.starts[f], end = cell.starts[f + 1];
-      for (std::uint32_t k = begin; k < end; ++k) {
-        const Point& u = cell.vertices[cell.cycles[k]];
-        const Point& w = cell.vertices[cell.cycles[k + 1 < end ? k + 1 : begin]];
-        const double tolerance = weld_tolerance(u, seed, kNearlyDegenerate);
-        if ((u - w).squaredNorm() <= tolerance * tolerance) {
-          marked[c] = 1;
-          break;
-        }
-      }
-    }
-  });
   std::vector<std::size_t> out;
   for (std::size_t c = 0; c < raw.size(); ++c) {
-    if (marked[c]) out.push_back(c);
+    if (raw[c].shortest_edge2 <= kNearlyDegenerate * kNearlyDegenerate) out.push_back(c);
   }
   return out;
 }
@@ -455,11 +437,11 @@ VoronoiMesh GrowingCells::mesh() const {
     std::vector<RawCell> raw(raw_.size());  // the fallbacks below cut some again, for this mesh only
     std::vector<Index> cell_seeds(raw_.size());
     std::vector<std::int32_t> cell_of_seed(cell_of_seed_.size(), kNoCell);
-    for (std::size_t i = 0; i < along.size(); ++i) {
+    tbb::parallel_for(std::size_t{0}, along.size(), [&](std::size_t i) {
       raw[i] = raw_[along[i]];
       cell_seeds[i] = cell_seeds_[along[i]];
       cell_of_seed[cell_seeds[i]] = static_cast<std::int32_t>(i);
-    }
+    });
     // Where cells disagree after welding, nearly cospherical seeds left a vertex split on one side
     // only, or round-off a tiny feature: those cells and their neighbours are cut again, first in
     // Voro++'s containers, then from bigger initial cubes, and their tolerance rises, to 1e-6 of
@@ -541,7 +523,7 @@ VoronoiMesh GrowingCells::mesh() const {
     // are mended before all cells are welded. Cells this misses (on cgal_bones it finds 46, and
     // the weld of all 8 more, whose disagreement shows only among more cells) go through the
     // fallbacks from the first: the attempts start again, and a cell's tolerance only rises.
-    if (const std::vector<std::size_t> suspects = near_degenerate(raw, cell_seeds, frame); !suspects.empty()) {
+    if (const std::vector<std::size_t> suspects = near_degenerate(raw); !suspects.empty()) {
       const std::vector<char> failed = disagreeing(suspects);
       if (std::count(failed.begin(), failed.end(), 1) > 0) {
         int attempt = 0;

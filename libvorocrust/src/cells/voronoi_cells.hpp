@@ -38,6 +38,10 @@ struct RawCell {
   // (the farthest seed cut, or twice the farthest vertex); set by the cuts alone, not by Voro++'s
   // containers.
   double reach2 = 0;
+  // The shortest edge, squared, over the square of the larger of 1 and the radius of its
+  // vertices' empty spheres (the unit of welding's tolerances): where Voro++ resolved a
+  // degenerate vertex into a tiny edge, it is tiny.
+  double shortest_edge2 = 0;
   std::size_t num_faces() const { return neighbours.size(); }
 };
 
