@@ -97,12 +97,14 @@ void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cel
   }
   cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
   canonicalize(cell, scratch);
+  // Each edge is seen from both its faces; from the one where it runs from its lower vertex.
   cell.shortest_edge2 = std::numeric_limits<double>::infinity();
   for (std::size_t f = 0; f < cell.num_faces(); ++f) {
     const std::uint32_t begin = cell.starts[f], end = cell.starts[f + 1];
     for (std::uint32_t k = begin; k < end; ++k) {
-      const Point& u = cell.vertices[cell.cycles[k]];
-      const Point& w = cell.vertices[cell.cycles[k + 1 < end ? k + 1 : begin]];
+      const std::uint32_t a = cell.cycles[k], b = cell.cycles[k + 1 < end ? k + 1 : begin];
+      if (a > b) continue;
+      const Point &u = cell.vertices[a], &w = cell.vertices[b];
       const double unit2 = std::max({(u - p).squaredNorm(), (w - p).squaredNorm(), 1.0});
       cell.shortest_edge2 = std::min(cell.shortest_edge2, (u - w).squaredNorm() / unit2);
     }
