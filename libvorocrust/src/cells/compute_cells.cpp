@@ -460,6 +460,9 @@ VoronoiMesh GrowingCells::mesh() const {
       }
       return cells;
     };
+    // The seeds' tree, built when a fallback first needs it.
+    std::optional<SeedTree> tree;
+    const auto seed_tree = [&]() -> const SeedTree& { return tree ? *tree : tree.emplace(frame.normalized); };
     // The cells that fail and their neighbours, cut again for the next attempt.
     const auto cut_again = [&](const std::vector<char>& failed, int attempt) {
       const std::vector<std::size_t> which = cells_and_neighbours(failed);
@@ -473,9 +476,10 @@ VoronoiMesh GrowingCells::mesh() const {
           if (!lost[k]) raw[which[k]] = std::move(redone[k]);  // else the cell as cut alone stays
         }
         recompute_voronoi_cells(frame.normalized, cell_seeds,
-                                cells_holding_others(frame.normalized, cell_seeds, raw, which), 1, raw);
+                                cells_holding_others(frame.normalized, cell_seeds, raw, which, &seed_tree()), 1, raw,
+                                &seed_tree());
       } else {
-        recompute_voronoi_cells(frame.normalized, cell_seeds, which, attempt, raw);
+        recompute_voronoi_cells(frame.normalized, cell_seeds, which, attempt, raw, &seed_tree());
       }
       return which;
     };

@@ -449,16 +449,23 @@ constexpr int kVerifiedTries = 8;
 
 }  // namespace
 
-void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
-                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells) {
-  if (which.empty()) return;
-  const Cloud cloud{&positions};
-  StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+SeedTree::SeedTree(const std::vector<Point>& positions)
+    : cloud{&positions}, tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16)) {
   Eigen::AlignedBox3d bounds;
   for (const Point& p : positions) bounds.extend(p);
-  // The initial cell: a cube about each seed bigger than all seeds, so that only a cell no seed
-  // bounds keeps one of its walls.
-  const double base = bounds.diagonal().norm() + 1;
+  // A cube about a seed this big holds all seeds, so that only a cell no seed bounds keeps one of
+  // its walls.
+  half_side = bounds.diagonal().norm() + 1;
+}
+
+void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
+                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells,
+                             const SeedTree* seed_tree) {
+  if (which.empty()) return;
+  std::optional<SeedTree> own;
+  if (!seed_tree) seed_tree = &own.emplace(positions);
+  const StaticKdTree<Cloud>& tree = seed_tree->tree;
+  const double base = seed_tree->half_side;
   // Cut along a curve through the seeds: a cutter's next cell is mostly a neighbour of its last,
   // like it in size (the first shell of seeds it fetches) and in the tree nodes it visits.
   const std::vector<std::uint32_t> along = geometry::curve_order(
@@ -490,9 +497,11 @@ void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vec
 }
 
 std::vector<std::size_t> cells_holding_others(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
-                                              const std::vector<RawCell>& cells, const std::vector<std::size_t>& which) {
-  const Cloud cloud{&positions};
-  StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+                                              const std::vector<RawCell>& cells, const std::vector<std::size_t>& which,
+                                              const SeedTree* seed_tree) {
+  std::optional<SeedTree> own;
+  if (!seed_tree) seed_tree = &own.emplace(positions);
+  const StaticKdTree<Cloud>& tree = seed_tree->tree;
   std::vector<char> bad(which.size(), 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, which.size(), 64), [&](const auto& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {

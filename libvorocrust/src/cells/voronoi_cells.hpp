@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "refinement/point_cloud.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust::cells {
@@ -43,6 +44,19 @@ struct RawCell {
   // degenerate vertex into a tiny edge, it is tiny.
   double shortest_edge2 = 0;
   std::size_t num_faces() const { return neighbours.size(); }
+};
+
+// The k-d tree of the positions that the cuts search, and the bounds of the positions. Building it
+// costs as much as cutting thousands of cells: the assembly's fallbacks, which cut a few dozen
+// cells again several times, build it once and pass it to each call (`positions` must outlive it
+// and stay as they are).
+struct SeedTree {
+  explicit SeedTree(const std::vector<Point>& positions);
+  SeedTree(const SeedTree&) = delete;
+  SeedTree& operator=(const SeedTree&) = delete;
+  PointCloudAdaptor<Point, IdentityPosition> cloud;
+  StaticKdTree<PointCloudAdaptor<Point, IdentityPosition>> tree;
+  double half_side = 0;  // of a cube about any seed that holds all seeds
 };
 
 std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds);
@@ -64,13 +78,16 @@ std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point
 // above 0 (the assembly's fallbacks) each cell is also checked to hold no vertex nearer another
 // seed, and cut from further cubes until it does (a few at most): round-off can make Voro++ lose
 // a whole cut, and a fallback must not trade a tiny disagreement for a wedge of another cell.
+// `tree`: the positions' SeedTree, or none to build one.
 void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
-                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells);
+                             const std::vector<std::size_t>& which, int variant, std::vector<RawCell>& cells,
+                             const SeedTree* tree = nullptr);
 
 // The cells among `which` (indices into `cells`, the cells of `cell_seeds`) with a vertex nearer
 // another seed than their own, beyond round-off: cells a lost cut left too big.
 std::vector<std::size_t> cells_holding_others(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
-                                              const std::vector<RawCell>& cells, const std::vector<std::size_t>& which);
+                                              const std::vector<RawCell>& cells, const std::vector<std::size_t>& which,
+                                              const SeedTree* tree = nullptr);
 
 // The cells (indices into `cells`, the cells of `cell_seeds`, cut by compute_voronoi_cells)
 // within whose reach2 the seeds `added` lie. The other cells compute_voronoi_cells would cut
