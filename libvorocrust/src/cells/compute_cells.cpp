@@ -484,8 +484,11 @@ VoronoiMesh GrowingCells::mesh() const {
       return which;
     };
     // Which of the cells `which` and their neighbours still disagree among themselves, welded and
-    // assembled alone: a few dozen cells instead of every cell for each attempt. (Only the
-    // assembly of all cells decides; this tells when it is worth running.)
+    // assembled alone: a few dozen cells instead of every cell for each attempt. (The assembly of
+    // all cells has the last word; this tells when it is worth running, and, before the first,
+    // which cells to mend. A cell that disagrees only here, where a neighbour beyond the set
+    // would have joined two of its points, is cut again and welded at a higher tolerance: a cost,
+    // not an error.)
     const auto disagreeing = [&](const std::vector<std::size_t>& which) {
       std::vector<char> marked(raw.size(), 0);
       for (std::size_t c : which) marked[c] = 1;

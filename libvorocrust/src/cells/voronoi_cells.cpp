@@ -118,7 +118,8 @@ constexpr std::size_t kSlabCells = 8192;
 constexpr double kSeedsPerBlock = 5.6;
 // First margin of neighbouring seeds around a slab, in units of the seed spacing.
 constexpr double kFirstMargin = 3.0;
-// Seeds the first k-d tree query gives a cell cut alone: most cells need fewer.
+// Seeds the first shell of a cutter's first cell holds (later cells fetch as far as the cell
+// before them needed): most cells need fewer.
 constexpr std::size_t kNearestFirst = 32;
 // Half the side of the first cube of a cell cut at the scale of its nearest seed, in that unit.
 constexpr double kLocalCube = 64;
@@ -271,9 +272,11 @@ namespace {
 
 // Cuts and extracts one cell: a cube about its seed, cut by the other
 // seeds in the order of (distance, seed), each cut unless it lies beyond twice the cell's
-// farthest vertex, where it cannot cut, nor can any after it: the nearest from a k-d tree query,
-// then those in shells of doubling radius. So the cuts that are made do not depend on the tree,
-// nor on seeds beyond the reach, whatever else the positions hold.
+// farthest vertex, where it cannot cut, nor can any after it. The seeds come from k-d tree
+// searches in shells about the seed, each shell every seed at a squared distance in [lower,
+// upper). So the cuts that are made do not depend on the tree, nor on where the shells end (which
+// is all a cutter carries from one cell to the next), nor on seeds beyond the reach, whatever
+// else the positions hold.
 class CellCutter {
  public:
   CellCutter(const std::vector<Point>& positions, const StaticKdTree<Cloud>& tree) : positions_(positions), tree_(tree) {}
@@ -315,7 +318,9 @@ class CellCutter {
       }
       return true;
     }
-    double worstDist() const { return upper_; }
+    // A little beyond upper, for the tree's pruning only: it rounds the distance to a node's box,
+    // and a seed just inside the shell must not be lost to that (addPoint keeps the exact bounds).
+    double worstDist() const { return upper_ * (1 + 1e-12); }
     std::size_t within() const { return within_; }
 
    private:
@@ -364,7 +369,8 @@ class CellCutter {
     if (scale == 1) guess2_ = radius2_;
   }
 
-  // For a cell with no cell cut before it: the squared distance of the kNearestFirst-th seed.
+  // For a cell with no cell cut before it: just beyond the squared distance of the
+  // kNearestFirst-th seed, so that the first shell holds it and any at the same distance.
   double first_shell2(const Point& p) {
     const std::size_t wanted = std::min<std::size_t>(kNearestFirst, positions_.size());
     scratch_.near.resize(wanted);

@@ -13,7 +13,8 @@
 // interior seeds and outside seeds spread over a box three times the model's crowd some blocks
 // and empty others (igl_bunny: 37 s in containers, 9 s nearest first; as fast on even seeds),
 // and where many seeds are nearly cospherical their block order could leave a cell missing a
-// neighbour. Cells are independent, so the result does not depend on the thread count.
+// neighbour. Each cell's cuts depend on its seed and the positions alone, so the result does not
+// depend on the thread count or on the order cells are cut in.
 //
 // `positions` should be scaled so that seeds are about one unit apart: Voro++ decides
 // degeneracies with an absolute tolerance of 1e-11.
@@ -41,7 +42,8 @@ struct RawCell {
   double reach2 = 0;
   // The shortest edge, squared, over the square of the larger of 1 and the radius of its
   // vertices' empty spheres (the unit of welding's tolerances): where Voro++ resolved a
-  // degenerate vertex into a tiny edge, it is tiny.
+  // degenerate vertex into a tiny edge, it is tiny. 0 until measured: such a cell counts as
+  // nearly degenerate.
   double shortest_edge2 = 0;
   std::size_t num_faces() const { return neighbours.size(); }
 };
@@ -67,7 +69,7 @@ std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, 
 // the assembly's first fallback for cells at odds with their neighbours. Where Voro++ gives no
 // cell (round-off can cut a cell away among seeds that nearly coincide: two surface seeds of
 // cgal_bones 4e-5 radii apart) or one that keeps a wall of its container, lost[k] is set and
-// cells[k] left empty.
+// cells[k] is not to be used (empty, or the cell with the wall).
 std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point>& positions,
                                                          const std::vector<Index>& cell_seeds, std::vector<char>& lost);
 
