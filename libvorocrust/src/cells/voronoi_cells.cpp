@@ -372,11 +372,16 @@ class CellCutter {
   // For a cell with no cell cut before it: just beyond the squared distance of the
   // kNearestFirst-th seed, so that the first shell holds it and any at the same distance.
   double first_shell2(const Point& p) {
+    const std::size_t found = nearest_seeds(p);
+    return found > 0 ? std::nextafter(scratch_.distance2[found - 1], std::numeric_limits<double>::infinity()) : 1e-300;
+  }
+
+  // The kNearestFirst seeds nearest p (or all), into scratch_.near and .distance2; how many.
+  std::size_t nearest_seeds(const Point& p) {
     const std::size_t wanted = std::min<std::size_t>(kNearestFirst, positions_.size());
     scratch_.near.resize(wanted);
     scratch_.distance2.resize(wanted);
-    const std::size_t found = tree_.knnSearch(p.data(), wanted, scratch_.near.data(), scratch_.distance2.data());
-    return found > 0 ? std::nextafter(scratch_.distance2[found - 1], std::numeric_limits<double>::infinity()) : 1e-300;
+    return tree_.knnSearch(p.data(), wanted, scratch_.near.data(), scratch_.distance2.data());
   }
 
   // The bounding box of the cell's vertices and Voro++'s max_radius_squared, after each cut.
@@ -412,10 +417,7 @@ class CellCutter {
   // spacing): a seed added nearer than that is within the cell's reach, so the scale of a cell
   // that cells_reached passes over stays as it was.
   double local_scale(Index seed) {
-    const std::size_t wanted = std::min<std::size_t>(kNearestFirst, positions_.size());
-    scratch_.near.resize(wanted);
-    scratch_.distance2.resize(wanted);
-    const std::size_t found = tree_.knnSearch(positions_[seed].data(), wanted, scratch_.near.data(), scratch_.distance2.data());
+    const std::size_t found = nearest_seeds(positions_[seed]);
     for (std::size_t j = 0; j < found; ++j) {
       if (scratch_.near[j] == seed || !(scratch_.distance2[j] > 0)) continue;
       return std::min(1.0, std::exp2(std::round(std::log2(scratch_.distance2[j]) / 2)));

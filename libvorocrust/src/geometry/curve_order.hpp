@@ -8,10 +8,10 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <utility>
 #include <vector>
 
+#include "geometry/box_tree.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust::geometry {
@@ -29,15 +29,12 @@ inline std::uint64_t spread_bits(std::uint64_t x) {
 
 template <class Position>
 std::vector<std::uint32_t> curve_order(std::size_t count, Position&& position) {
-  Point lo = Point::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (std::size_t i = 0; i < count; ++i) {
-    lo = lo.cwiseMin(position(i));
-    hi = hi.cwiseMax(position(i));
-  }
-  const Point scale = (hi - lo).cwiseMax(1e-300).cwiseInverse() * double((1 << 21) - 1);
+  Box box;
+  for (std::size_t i = 0; i < count; ++i) box.include(position(i));
+  const Point scale = (box.hi - box.lo).cwiseMax(1e-300).cwiseInverse() * double((1 << 21) - 1);
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(count);
   for (std::size_t i = 0; i < count; ++i) {
-    const Point q = (position(i) - lo).cwiseProduct(scale);
+    const Point q = (position(i) - box.lo).cwiseProduct(scale);
     keys[i] = {spread_bits(static_cast<std::uint64_t>(q.x())) | spread_bits(static_cast<std::uint64_t>(q.y())) << 1 |
                    spread_bits(static_cast<std::uint64_t>(q.z())) << 2,
                static_cast<std::uint32_t>(i)};
