@@ -113,6 +113,14 @@ int run_mesh(const MeshArgs& args) {
                      "(%zu new points), %zu faces left inside one region dropped, %zu faces in all\n",
                      s.faces_cut, s.points_added, s.faces_dropped, s.faces);
       }
+      const FeatureCounts& f = result->features;
+      if (f.smoothing_rounds_refused > 0 || f.smoothing_rounds_crossing > 0) {
+        const int held_back = std::max(f.smoothing_rounds_refused, f.smoothing_rounds_crossing);
+        std::fprintf(stderr, "vorocrust: smoothing kept %d round(s); %d would %s\n", f.smoothing_iterations, held_back,
+                     f.smoothing_rounds_crossing >= f.smoothing_rounds_refused
+                         ? "carry the surface through itself"
+                         : "make a sharp feature the input lacks");
+      }
       const RefinementStats& r = result->refinement;
       std::fprintf(stderr, "vorocrust: %zu balls (%zu corner, %zu crease, %zu patch) in %s\n",
                    r.balls[0] + r.balls[1] + r.balls[2], r.balls[0], r.balls[1], r.balls[2], args.output_dir.c_str());

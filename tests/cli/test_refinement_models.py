@@ -31,8 +31,8 @@ class RefinementMeetsTheBallConditions(unittest.TestCase):
         with open(os.path.join(out, "report.json")) as f:
             return json.load(f)["features"]
 
-    def assert_conditions_hold(self, surface, out):
-        check = subprocess.run([BINARY, "check-balls", surface, os.path.join(out, "balls.csv")],
+    def assert_conditions_hold(self, surface, out, *options):
+        check = subprocess.run([BINARY, "check-balls", *options, surface, os.path.join(out, "balls.csv")],
                                capture_output=True, text=True, timeout=600)
         self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
         self.assertIn("all ball conditions hold", check.stdout)
@@ -49,6 +49,7 @@ class RefinementMeetsTheBallConditions(unittest.TestCase):
         with tempfile.TemporaryDirectory() as out:
             features = self.mesh_balls(os.path.join(MODELS, "cgal_joint.off"), out, "--smoothing-iterations", "6")
             self.assertEqual(features["smoothing_iterations"], 6)
+            self.assertEqual(features["smoothing_rounds_crossing"], 0)
             self.assertGreater(features["faces_after_smoothing"], 446)
             self.assert_conditions_hold(os.path.join(out, "smoothed_surface.ply"), out)
 
@@ -64,6 +65,58 @@ class RefinementMeetsTheBallConditions(unittest.TestCase):
             self.assertFalse(os.path.exists(os.path.join(out, "smoothed_surface.ply")))
             self.assert_conditions_hold(path, out)
 
+    def test_smoothing_that_would_carry_a_shell_through_another_is_refused(self):
+        # An icosahedron of circumradius 1.2 around a finer sphere of radius 0.3 centred 0.6 off
+        # its centre, so 0.9 out, inside the icosahedron's faces (0.954): Loop's rules pull the
+        # icosahedron's vertices in towards 0.85, and two rounds carry it through the sphere. No
+        # union of balls covers a surface that crosses itself (the refinement gave up on such a
+        # surface, or ran on for minutes). The most rounds that cross nothing are kept (one), and
+        # the balls cover that smoothed surface.
+        with tempfile.TemporaryDirectory() as out:
+            path = os.path.join(out, "nested.off")
+            write_off(path, [icosphere(0, 1.2), icosphere(3, 0.3, (0.6, 0, 0))])
+            features = self.mesh_balls(path, out, "--smooth")
+            self.assertEqual(features["smoothing_rounds_crossing"], 2)
+            self.assertEqual(features["smoothing_iterations"], 1)
+            self.assertEqual(features["smoothing_rounds_refused"], 0)
+            smoothed = os.path.join(out, "smoothed_surface.ply")
+            info = subprocess.run([BINARY, "info", smoothed], capture_output=True, text=True, timeout=600)
+            self.assertEqual(info.returncode, 0, info.stdout + info.stderr)  # it would name crossing faces
+            self.assert_conditions_hold(smoothed, out, "--smooth")
+
+def icosphere(level, radius, centre=(0, 0, 0)):
+    """Vertices and triangles of an icosahedron split `level` times, on a sphere of `radius`."""
+    t = (1 + 5 ** 0.5) / 2
+    points = [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t), (0, -1, -t), (0, 1, -t),
+              (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]
+    faces = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+             (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5),
+             (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    for _ in range(level):
+        middle = {}
+        def mid(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in middle:
+                middle[key] = len(points)
+                points.append(tuple((p + q) / 2 for p, q in zip(points[a], points[b])))
+            return middle[key]
+        faces = [f for a, b, c in faces
+                 for f in ((a, mid(a, b), mid(c, a)), (b, mid(b, c), mid(a, b)), (c, mid(c, a), mid(b, c)),
+                           (mid(a, b), mid(b, c), mid(c, a)))]
+    scaled = [tuple(c + radius * x / sum(y * y for y in p) ** 0.5 for x, c in zip(p, centre)) for p in points]
+    return scaled, faces
+
+
+def write_off(path, shells):
+    points = [p for shell_points, _ in shells for p in shell_points]
+    faces, offset = [], 0
+    for shell_points, shell_faces in shells:
+        faces += [tuple(offset + i for i in f) for f in shell_faces]
+        offset += len(shell_points)
+    with open(path, "w") as f:
+        f.write(f"OFF\n{len(points)} {len(faces)} 0\n")
+        f.writelines(f"{x!r} {y!r} {z!r}\n" for x, y, z in points)
+        f.writelines(f"3 {a} {b} {c}\n" for a, b, c in faces)
 
 if __name__ == "__main__":
     unittest.main(verbosity=2)

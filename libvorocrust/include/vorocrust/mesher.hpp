@@ -159,7 +159,8 @@ struct FeatureCounts {
   std::size_t sharp_edges = 0, corners = 0, creases = 0, patches = 0;
   std::size_t faces_after_smoothing = 0;
   int smoothing_iterations = 0;      // rounds applied
-  int smoothing_rounds_refused = 0;  // fewest rounds that made a new feature (0: none did)
+  int smoothing_rounds_refused = 0;   // fewest rounds that made a new feature (0: none did)
+  int smoothing_rounds_crossing = 0;  // fewest rounds whose surface crossed itself (0: none did)
 };
 
 struct MeshResult {

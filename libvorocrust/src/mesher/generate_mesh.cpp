@@ -8,6 +8,7 @@
 #include "cells/growing_cells.hpp"
 #include "features/smooth_patches.hpp"
 #include "features/strata.hpp"
+#include "geometry/self_intersections.hpp"
 #include "interior/cap_seeds.hpp"
 #include "interior/lloyd_relaxation.hpp"
 #include "io/enclose_in_box.hpp"
@@ -126,6 +127,11 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
       // appears beside a corner on cgal_fandisk), the run takes one round fewer, down to none.
       // A smooth surface's features before smoothing are its topology's, which subdivision
       // keeps: detected afresh they are the carried ones, so they are not detected again.
+      // Nor may smoothing carry a sheet through a nearby one, as Loop's rules pull a coarse
+      // convex sheet inward (on openmeeg_HeadNNa1 one round does): no union of balls covers a
+      // surface that crosses itself, so such a round count is refused too, unless the input
+      // already crossed itself (--self-intersections keep).
+      std::optional<bool> input_crosses_itself;
       for (int rounds = options.smoothing_rounds(); rounds > 0; --rounds) {
         SmoothingOptions smoothing;
         smoothing.max_iterations = rounds;
@@ -136,6 +142,13 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
           const Strata fresh = detect_strata(smoothed.mesh, sharp_angle);
           if (fresh.sharp_edge != carried.sharp_edge || fresh.corners != carried.corners) {
             result.features.smoothing_rounds_refused = rounds;
+            continue;
+          }
+        }
+        if (!geometry::find_self_intersections(smoothed.mesh).empty()) {
+          if (!input_crosses_itself) input_crosses_itself = !geometry::find_self_intersections(input).empty();
+          if (!*input_crosses_itself) {
+            result.features.smoothing_rounds_crossing = rounds;
             continue;
           }
         }

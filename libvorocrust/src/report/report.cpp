@@ -231,7 +231,8 @@ std::string run_report_json(const RunReport& report, int indent) {
     doc["features"] = {{"sharp_edges", f.sharp_edges}, {"corners", f.corners},  {"creases", f.creases},
                        {"patches", f.patches},         {"faces_after_smoothing", f.faces_after_smoothing},
                        {"smoothing_iterations", f.smoothing_iterations},
-                       {"smoothing_rounds_refused", f.smoothing_rounds_refused}};
+                       {"smoothing_rounds_refused", f.smoothing_rounds_refused},
+                       {"smoothing_rounds_crossing", f.smoothing_rounds_crossing}};
     // The rows of the paper's Table 1, with the counts behind them.
     doc["refinement"] = {
         {"balls", {{"corner", r.balls[0]}, {"crease", r.balls[1]}, {"patch", r.balls[2]},
