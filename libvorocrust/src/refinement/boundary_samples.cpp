@@ -231,11 +231,11 @@ void BoundarySamples::nearest_non_cosmooth_patch_sample(const SurfaceSite& cente
                                                         double& best) const {
   if (!trees_->group_tree || !(best > 0)) return;
   const Point& p = center.position;
-  const double search = std::sqrt(best);
-  geometry::Box query;
-  query.include(Point(p.array() - search));
-  query.include(Point(p.array() + search));
-  trees_->group_tree->for_each_overlap(query, [&](std::uint32_t g) {
+  // Nodes as near as the best so far are passed over: on a smooth patch the nearest point that
+  // is not co-smooth lies far, and a box of the first bound held most of the model (igl_bunny
+  // --smooth). The groups looked at, and their order, are those of that box's search.
+  const auto nearer = [&](const geometry::Box& box) { return box.squared_distance(p) < best; };
+  trees_->group_tree->for_each_where(nearer, [&](std::uint32_t g) {
     const SampleGroup& group = trees_->groups[g];
     const geometry::Box& box = trees_->group_tree->box(g);
     SurfaceSite x = trees_->face_sites[group.face];
