@@ -233,7 +233,8 @@ void BoundarySamples::nearest_non_cosmooth_patch_sample(const SurfaceSite& cente
   const Point& p = center.position;
   // Nodes as near as the best so far are passed over: on a smooth patch the nearest point that
   // is not co-smooth lies far, and a box of the first bound held most of the model (igl_bunny
-  // --smooth). The groups looked at, and their order, are those of that box's search.
+  // --smooth). A group passed over here is one that search skipped too (its box no nearer than
+  // the best, which only falls), and the rest come in the same order: the same answer.
   const auto nearer = [&](const geometry::Box& box) { return box.squared_distance(p) < best; };
   trees_->group_tree->for_each_where(nearer, [&](std::uint32_t g) {
     const SampleGroup& group = trees_->groups[g];
