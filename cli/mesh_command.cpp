@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "cell_figures.hpp"
 #include "commands.hpp"
@@ -115,11 +116,14 @@ int run_mesh(const MeshArgs& args) {
       }
       const FeatureCounts& f = result->features;
       if (f.smoothing_rounds_refused > 0 || f.smoothing_rounds_crossing > 0) {
-        const int held_back = std::max(f.smoothing_rounds_refused, f.smoothing_rounds_crossing);
-        std::fprintf(stderr, "vorocrust: smoothing kept %d round(s); %d would %s\n", f.smoothing_iterations, held_back,
-                     f.smoothing_rounds_crossing >= f.smoothing_rounds_refused
-                         ? "carry the surface through itself"
-                         : "make a sharp feature the input lacks");
+        std::string why;
+        if (f.smoothing_rounds_refused > 0) {
+          why += "; " + std::to_string(f.smoothing_rounds_refused) + " would make a sharp feature the input lacks";
+        }
+        if (f.smoothing_rounds_crossing > 0) {
+          why += "; " + std::to_string(f.smoothing_rounds_crossing) + " would carry the surface through itself";
+        }
+        std::fprintf(stderr, "vorocrust: smoothing kept %d round(s)%s\n", f.smoothing_iterations, why.c_str());
       }
       const RefinementStats& r = result->refinement;
       std::fprintf(stderr, "vorocrust: %zu balls (%zu corner, %zu crease, %zu patch) in %s\n",

@@ -40,8 +40,8 @@ TEST(EdgeTopology, NonManifoldEdgeKeepsAllItsFaces) {
 
 // Edges sorted by their vertex pair, each with its faces in face order, and every face's slots
 // naming them: checked against a map of the same edges, on a fan of 40 faces about vertex 0 (more
-// than a vertex's few, sorted another way) and random faces over 12 vertices, whose edges have up
-// to a dozen faces. A mesh with an index past its vertices (not validated yet) gives the same.
+// than a vertex's few, sorted another way), four faces about vertex 13, and random faces over 12
+// vertices, whose edges have up to a dozen faces. A mesh with an index past its vertices (not validated yet) gives the same.
 TEST(EdgeTopology, EdgesComeInVertexOrderWithTheirFacesInFaceOrder) {
   SurfaceMesh m;
   m.groups.push_back({"mixed", ""});
@@ -49,6 +49,11 @@ TEST(EdgeTopology, EdgesComeInVertexOrderWithTheirFacesInFaceOrder) {
   for (Index k = 0; k < 40; ++k) m.add_triangle({0, 20 + (k * 7) % 40, 20 + (k * 7 + 1) % 40}, 0);
   std::mt19937 random(5);
   std::uniform_int_distribution<Index> vertex(1, 12);
+  // A vertex with a few corners (an insertion sort's few), their other ends out of order and
+  // each met by two faces.
+  for (Triangle t : {Triangle{13, 17, 15}, Triangle{13, 15, 16}, Triangle{16, 13, 17}, Triangle{14, 15, 13}}) {
+    m.add_triangle(t, 0);
+  }
   while (m.num_faces() < 400) {
     const Triangle t{vertex(random), vertex(random), vertex(random)};
     if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0]) m.add_triangle(t, 0);

@@ -45,6 +45,7 @@ EdgeTopology build_edge_topology(const SurfaceMesh& mesh) {
     for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
       const auto first = corners.begin() + static_cast<std::ptrdiff_t>(start[v]);
       const auto last = corners.begin() + static_cast<std::ptrdiff_t>(start[v + 1]);
+      if (last - first < 2) continue;
       if (last - first > 32) {
         std::stable_sort(first, last, [](const Corner& x, const Corner& y) { return x.b < y.b; });
         continue;

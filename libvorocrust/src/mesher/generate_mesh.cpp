@@ -128,27 +128,30 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
       // A smooth surface's features before smoothing are its topology's, which subdivision
       // keeps: detected afresh they are the carried ones, so they are not detected again.
       // Nor may smoothing carry a sheet through a nearby one, as Loop's rules pull a coarse
-      // convex sheet inward (on openmeeg_HeadNNa1 one round does): no union of balls covers a
-      // surface that crosses itself, so such a round count is refused too, unless the input
-      // already crossed itself (--self-intersections keep).
+      // convex sheet inward (on openmeeg_HeadNNa1 one round does): the refinement cannot meet
+      // the ball conditions where a surface crosses itself (it gave up on that one), so such a
+      // round count is refused too, unless the input already crossed itself (--self-intersections
+      // keep). A refused smoothing that stopped early would come again for every round count down
+      // to the rounds it applied, so the next try takes one round fewer than those.
       std::optional<bool> input_crosses_itself;
-      for (int rounds = options.smoothing_rounds(); rounds > 0; --rounds) {
+      for (int rounds = options.smoothing_rounds(); rounds > 0;) {
         SmoothingOptions smoothing;
         smoothing.max_iterations = rounds;
         SmoothedSurface smoothed = smooth_patches(input, strata, smoothing);
         if (smoothed.iterations == 0) break;
+        rounds = smoothed.iterations - 1;  // the next try, if this one is refused
         Strata carried = strata_after_smoothing(smoothed);
         if (!options.smooth) {
           const Strata fresh = detect_strata(smoothed.mesh, sharp_angle);
           if (fresh.sharp_edge != carried.sharp_edge || fresh.corners != carried.corners) {
-            result.features.smoothing_rounds_refused = rounds;
+            result.features.smoothing_rounds_refused = smoothed.iterations;
             continue;
           }
         }
         if (!geometry::find_self_intersections(smoothed.mesh).empty()) {
           if (!input_crosses_itself) input_crosses_itself = !geometry::find_self_intersections(input).empty();
           if (!*input_crosses_itself) {
-            result.features.smoothing_rounds_crossing = rounds;
+            result.features.smoothing_rounds_crossing = smoothed.iterations;
             continue;
           }
         }

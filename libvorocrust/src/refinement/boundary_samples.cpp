@@ -231,10 +231,12 @@ void BoundarySamples::nearest_non_cosmooth_patch_sample(const SurfaceSite& cente
                                                         double& best) const {
   if (!trees_->group_tree || !(best > 0)) return;
   const Point& p = center.position;
-  // Nodes as near as the best so far are passed over: on a smooth patch the nearest point that
-  // is not co-smooth lies far, and a box of the first bound held most of the model (igl_bunny
-  // --smooth). A group passed over here is one that search skipped too (its box no nearer than
-  // the best, which only falls), and the rest come in the same order: the same answer.
+  // Nodes no nearer than the best so far are passed over. (A cube of side twice the first bound
+  // was searched before: on a smooth patch the nearest point that is not co-smooth lies far, and
+  // the cube held most of the model, igl_bunny --smooth.) Every group passed over would have
+  // failed the test below too, as the best only falls, and the rest come in the same order; only
+  // a group whose box meets the bound to within a rounding of the cube's side can now be looked
+  // at where the cube missed it.
   const auto nearer = [&](const geometry::Box& box) { return box.squared_distance(p) < best; };
   trees_->group_tree->for_each_where(nearer, [&](std::uint32_t g) {
     const SampleGroup& group = trees_->groups[g];
