@@ -140,10 +140,12 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
         SmoothedSurface smoothed = smooth_patches(input, strata, smoothing);
         if (smoothed.iterations == 0) break;
         rounds = smoothed.iterations - 1;  // the next try, if this one is refused
-        Strata carried = strata_after_smoothing(smoothed);
+        // A smooth surface's features are found afresh below, so only the others are carried.
+        std::optional<Strata> carried;
         if (!options.smooth) {
+          carried = strata_after_smoothing(smoothed);
           const Strata fresh = detect_strata(smoothed.mesh, sharp_angle);
-          if (fresh.sharp_edge != carried.sharp_edge || fresh.corners != carried.corners) {
+          if (fresh.sharp_edge != carried->sharp_edge || fresh.corners != carried->corners) {
             result.features.smoothing_rounds_refused = smoothed.iterations;
             continue;
           }
@@ -156,7 +158,7 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
           }
         }
         result.features.smoothing_iterations = smoothed.iterations;
-        strata = std::move(carried);
+        if (carried) strata = std::move(*carried);
         result.smoothed_input = std::move(smoothed.mesh);
         break;
       }
