@@ -83,6 +83,26 @@ class RefinementMeetsTheBallConditions(unittest.TestCase):
             self.assertEqual(info.returncode, 0, info.stdout + info.stderr)  # it would name crossing faces
             self.assert_conditions_hold(smoothed, out, "--smooth")
 
+    def test_smoothing_that_would_carry_a_shell_wholly_across_another_is_refused(self):
+        # The icosahedron of circumradius 1.2 around a concentric sphere of radius 0.9: one round
+        # brings some of it inside the sphere, two bring it wholly inside (towards 0.85) with no
+        # faces crossing. Kept, the regions' labels were on the wrong sides, and the run stopped
+        # at the cells ("cell of seed ... is not bounded by seeds"). No round is kept; the whole
+        # run ends with cells filling both regions.
+        with tempfile.TemporaryDirectory() as out:
+            path = os.path.join(out, "concentric.off")
+            write_off(path, [icosphere(0, 1.2), icosphere(3, 0.9)])
+            r = subprocess.run([BINARY, "mesh", path, "-o", out, "--smooth", "--smoothing-iterations", "2",
+                                "--format", "vtu", "-q"], capture_output=True, text=True, timeout=600)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            self.assertEqual(report["features"]["smoothing_iterations"], 0)
+            self.assertEqual(report["features"]["smoothing_rounds_crossing"], 1)
+            icosahedron = sum(region["volume"] for region in report["regions"])
+            self.assertAlmostEqual(report["cells"]["volume"] / icosahedron, 1, delta=0.01)
+
+
 def icosphere(level, radius, centre=(0, 0, 0)):
     """Vertices and triangles of an icosahedron split `level` times, on a sphere of `radius`."""
     t = (1 + 5 ** 0.5) / 2

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "regions/radial_order.hpp"
+#include "regions/region_labels_hold.hpp"
 #include "surface_builder.hpp"
 #include "test_support.hpp"
 #include "vorocrust/error.hpp"
@@ -81,6 +82,27 @@ TEST(LabelRegions, NestedShellsBoundTheSpaceBetweenThem) {
   EXPECT_NEAR(regions[2].volume, 1.0, 1e-12);
   EXPECT_EQ(faces_with(b.mesh, {1, 0}), 12u);  // the outer box
   EXPECT_EQ(faces_with(b.mesh, {2, 1}), 12u);  // the inner one
+}
+
+// The labels of nested boxes after their vertices move, as smoothing moves them.
+TEST(RegionLabelsHold, OnlyWhileNoShellIsCarriedAcrossAnother) {
+  Builder b;
+  b.box(Point(0, 0, 0), Point(3, 3, 3));
+  b.box(Point(1, 1, 1), Point(2, 2, 2));
+  label_regions(b.mesh);
+  const SurfaceMesh labelled = b.mesh;
+  const auto moved = [&](Index first, Index last, auto&& move) {
+    SurfaceMesh m = labelled;
+    for (Index v = first; v < last; ++v) m.vertices[v] = move(m.vertices[v]);
+    return m;
+  };
+  EXPECT_TRUE(region_labels_hold(labelled));
+  EXPECT_TRUE(region_labels_hold(moved(0, 16, [](const Point& p) -> Point { return p + Point(5, -2, 1); })));
+  EXPECT_TRUE(region_labels_hold(moved(8, 16, [](const Point& p) -> Point { return p + Point(0.5, 0, 0); })));
+  // The inner box out beside the outer one: its outside, labelled 1, faces the unbounded region.
+  EXPECT_FALSE(region_labels_hold(moved(8, 16, [](const Point& p) -> Point { return p + Point(4, 0, 0); })));
+  // The outer box shrunk inside the inner one, crossing nothing: the nesting is turned over.
+  EXPECT_FALSE(region_labels_hold(moved(0, 8, [](const Point& p) -> Point { return Point(1.25, 1.25, 1.25) + p / 6; })));
 }
 
 TEST(LabelRegions, SolidsSideBySideAndOneInsideAnotherEachGetARegion) {

@@ -160,7 +160,9 @@ struct FeatureCounts {
   std::size_t faces_after_smoothing = 0;
   int smoothing_iterations = 0;      // rounds applied
   int smoothing_rounds_refused = 0;   // fewest rounds that made a new feature (0: none did)
-  int smoothing_rounds_crossing = 0;  // fewest rounds refused as the surface crossed itself (0: none was)
+  // Fewest rounds refused as they carried the surface through itself: faces crossing, or a shell
+  // moved wholly across another (0: none was).
+  int smoothing_rounds_crossing = 0;
 };
 
 struct MeshResult {

@@ -14,6 +14,7 @@
 #include "io/enclose_in_box.hpp"
 #include "interior/sample_interior.hpp"
 #include "refinement/refine_balls.hpp"
+#include "regions/region_labels_hold.hpp"
 #include "seeds/eliminate_slivers.hpp"
 #include "seeds/locate_regions.hpp"
 #include "seeds/surface_seeds.hpp"
@@ -131,8 +132,10 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
       // convex sheet inward (on openmeeg_HeadNNa1 one round does): the refinement cannot meet
       // the ball conditions where a surface crosses itself (it gave up on that one), so such a
       // round count is refused too, unless the input already crossed itself (--self-intersections
-      // keep). A refused smoothing that stopped early would come again for every round count down
-      // to the rounds it applied, so the next try takes one round fewer than those.
+      // keep). Nor may it carry a shell wholly across another, which leaves nothing crossing but
+      // the regions' labels on the wrong sides (the cells then find a material no seed encloses).
+      // A refused smoothing that stopped early would come again for every round count down to
+      // the rounds it applied, so the next try takes one round fewer than those.
       std::optional<bool> input_crosses_itself;
       for (int rounds = options.smoothing_rounds(); rounds > 0;) {
         SmoothingOptions smoothing;
@@ -156,6 +159,10 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
             result.features.smoothing_rounds_crossing = smoothed.iterations;
             continue;
           }
+        }
+        if (!region_labels_hold(smoothed.mesh)) {
+          result.features.smoothing_rounds_crossing = smoothed.iterations;
+          continue;
         }
         result.features.smoothing_iterations = smoothed.iterations;
         if (carried) strata = std::move(*carried);

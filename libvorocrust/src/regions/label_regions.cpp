@@ -6,6 +6,7 @@
 
 #include "geometry/ray_cast.hpp"
 #include "regions/nest_shells.hpp"
+#include "regions/region_labels_hold.hpp"
 #include "regions/shells.hpp"
 #include "vorocrust/error.hpp"
 
@@ -104,6 +105,26 @@ std::vector<RegionSummary> label_regions(SurfaceMesh& mesh) {
 std::vector<RegionSummary> find_regions(const SurfaceMesh& mesh) {
   SurfaceMesh labelled = mesh;
   return label_regions(labelled);
+}
+
+bool region_labels_hold(const SurfaceMesh& mesh) {
+  SurfaceMesh afresh = mesh;
+  try {
+    label_regions(afresh);
+  } catch (const Error& e) {
+    if (e.kind() == Error::Kind::InvalidGeometry) return false;
+    throw;
+  }
+  // Labels are numbered by the order label_regions meets the pieces, so they are compared by name.
+  const auto& was = mesh.region_names;
+  const auto& now = afresh.region_names;
+  if (now.front() != was.front()) return false;
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    const RegionPair& a = mesh.face_regions[f];
+    const RegionPair& b = afresh.face_regions[f];
+    if (now[b.back] != was[a.back] || now[b.front] != was[a.front]) return false;
+  }
+  return true;
 }
 
 }  // namespace vorocrust

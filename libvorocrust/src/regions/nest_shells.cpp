@@ -21,6 +21,9 @@ double area(const SurfaceMesh& mesh, Index f) {
   return (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
 }
 
+// Faces of a part that rays from afar aim at before the part's outer shell is guessed by volume.
+constexpr std::size_t kAimedFaces = 8;
+
 Point generic_direction(std::size_t k) {
   const auto& g = geometry::kGenericDirections[k % geometry::kGenericDirections.size()];
   return Point(g[0], g[1], g[2]).normalized();
@@ -32,9 +35,13 @@ class Nesting {
       : mesh_(mesh), shells_(shells), rays_(rays), parts_(face_components(mesh, topology)),
         volume_(shell_volumes(mesh, shells)) {
     for (const Point& p : mesh.vertices) bounds_.include(p);
-    // Rays aim at a part's largest faces, whose centroids lie well inside them.
+    // Rays aim at a part's largest faces, whose centroids lie well inside them: those come first
+    // (ties by index, as the part lists its faces).
+    std::vector<double> areas(mesh.num_faces());
+    for (Index f = 0; f < mesh.num_faces(); ++f) areas[f] = area(mesh, f);
+    const auto larger = [&](Index a, Index b) { return areas[a] > areas[b] || (areas[a] == areas[b] && a < b); };
     for (auto& faces : parts_.faces) {
-      std::stable_sort(faces.begin(), faces.end(), [&](Index a, Index b) { return area(mesh_, a) > area(mesh_, b); });
+      std::partial_sort(faces.begin(), faces.begin() + std::min(faces.size(), kAimedFaces), faces.end(), larger);
     }
   }
 
@@ -74,7 +81,7 @@ class Nesting {
   Index outer_shell(Index c) const {
     const double reach = 2 * (bounds_.hi - bounds_.lo).norm() + 1;
     const std::vector<Index>& faces = parts_.faces[c];
-    for (std::size_t k = 0; k < std::min<std::size_t>(faces.size(), 8); ++k) {
+    for (std::size_t k = 0; k < std::min(faces.size(), kAimedFaces); ++k) {
       const Point target = centroid(mesh_, faces[k]);
       for (std::size_t d = 0; d < geometry::kGenericDirections.size(); ++d) {
         const Point direction = generic_direction(d);
