@@ -102,6 +102,17 @@ class RefinementMeetsTheBallConditions(unittest.TestCase):
             icosahedron = sum(region["volume"] for region in report["regions"])
             self.assertAlmostEqual(report["cells"]["volume"] / icosahedron, 1, delta=0.01)
 
+    def test_smoothing_leaves_the_box_around_a_smooth_sheet(self):
+        # gmsh_terrain is an open sheet, so it is meshed in a box. Smoothed with it as if the box
+        # were part of the smooth surface, the cube rounded into a blob through the terrain and
+        # every round was refused; the box keeps its edges, and all six rounds smooth the sheet.
+        with tempfile.TemporaryDirectory() as out:
+            features = self.mesh_balls(os.path.join(MODELS, "gmsh_terrain.stl"), out, "--smooth")
+            self.assertEqual(features["smoothing_iterations"], 6)
+            self.assertEqual(features["smoothing_rounds_crossing"], 0)
+            self.assertEqual(features["corners"], 8 + 4)  # the box's, and the four where the terrain's rim turns
+            self.assert_conditions_hold(os.path.join(out, "smoothed_surface.ply"), out, "--smooth")
+
 
 def icosphere(level, radius, centre=(0, 0, 0)):
     """Vertices and triangles of an icosahedron split `level` times, on a sphere of `radius`."""

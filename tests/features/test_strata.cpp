@@ -1,10 +1,12 @@
 // Feature detection on shapes whose corners, creases and patches are known.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "features/strata.hpp"
+#include "io/enclose_in_box.hpp"
 #include "test_support.hpp"
 #include "vorocrust/read_mesh.hpp"
 #include "vorocrust/validate.hpp"
@@ -130,6 +132,28 @@ TEST(Strata, ASmoothSurfaceKeepsItsBoundaryAndNonManifoldEdges) {
   EXPECT_EQ(cubes.creases.size(), 1u);  // the edge the cubes share, between its two corners
   EXPECT_EQ(cubes.corners.size(), 2u);
   EXPECT_EQ(cubes.num_patches, 2u);
+}
+
+TEST(Strata, TheSidesOfABoxAroundASmoothSurfaceKeepTheirEdges) {
+  // The camel's open neck puts it in a box. Taken as smooth, its own edges are sharp only on the
+  // rim; the box's twelve edges still bend past the angle and stay creases between eight corners.
+  SurfaceMesh camel = read_mesh(test::model("igl_camelhead.off"));
+  (void)validate(camel);
+  ASSERT_TRUE(needs_box(camel));
+  const SurfaceMesh boxed = enclose_in_box(camel, default_box(camel));
+  const std::vector<bool> box = box_faces(boxed);
+  ASSERT_EQ(std::count(box.begin(), box.end(), true), 12);
+  const Strata s = detect_strata(boxed, 60 * kDegree, FeatureDetection::BoundaryOnly, box);
+  expect_consistent(s);
+  std::size_t box_edges = 0, camel_edges = 0;
+  for (std::size_t e = 0; e < s.topology.num_edges(); ++e) {
+    if (!s.sharp_edge[e]) continue;
+    (box[s.topology.faces_of(e)[0]] ? box_edges : camel_edges) += 1;
+  }
+  EXPECT_EQ(box_edges, 12u);    // the cube's edges; not the diagonals of its sides
+  EXPECT_EQ(camel_edges, 56u);  // the rim, as without the box
+  EXPECT_EQ(s.corners.size(), 8u + strata_of("igl_camelhead.off", 60, FeatureDetection::BoundaryOnly).corners.size());
+  EXPECT_EQ(s.num_patches, 7u);  // the camel, and the box's six sides
 }
 
 TEST(Strata, SharpCadModelsAreConsistentAndAngleMonotone) {

@@ -189,8 +189,10 @@ Strata build_strata(const SurfaceMesh& mesh, std::vector<bool> sharp_edge_by_top
   return s;
 }
 
-Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle, FeatureDetection detection) {
+Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle, FeatureDetection detection,
+                     const std::vector<bool>& judged_by_angle) {
   const bool by_angle = detection == FeatureDetection::SharpAndBoundary;
+  const auto judged = [&](Index f) { return by_angle || (!judged_by_angle.empty() && judged_by_angle[f]); };
   Strata s;
   compute_topology_and_normals(mesh, s);
   const EdgeTopology& topo = s.topology;
@@ -209,7 +211,7 @@ Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle, FeatureDetecti
     if (edge_direction(mesh.triangles[faces[0]], a, b) == edge_direction(mesh.triangles[faces[1]], a, b)) {
       cos_angle = -cos_angle;  // inconsistent neighbours (a non-orientable patch): compare as lines
     }
-    s.sharp_edge[e] = by_angle && cos_angle < cos_sharp;
+    s.sharp_edge[e] = (judged(faces[0]) || judged(faces[1])) && cos_angle < cos_sharp;
   }
 
   const VertexEdges ve = vertex_edges(mesh.num_vertices(), topo);

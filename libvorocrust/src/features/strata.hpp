@@ -54,9 +54,13 @@ enum class FeatureDetection {
   BoundaryOnly,      // the surface is smooth: nothing is sharp for its angle
 };
 
-// Detects the strata of `mesh` for the sharp angle theta# (radians, in (0, pi/2)).
+// Detects the strata of `mesh` for the sharp angle theta# (radians, in (0, pi/2)). With
+// BoundaryOnly, the edges of faces flagged in `judged_by_angle` (by face; empty for none) are
+// still sharp past theta#: the sides of a box around a smooth model are no part of its smooth
+// surface, and smoothed with it they would round into a blob through the model.
 Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle,
-                     FeatureDetection detection = FeatureDetection::SharpAndBoundary);
+                     FeatureDetection detection = FeatureDetection::SharpAndBoundary,
+                     const std::vector<bool>& judged_by_angle = {});
 
 // The strata of `mesh` for sharp edges (by edge of its EdgeTopology) and corners decided already,
 // as after smoothing, which carries the input's features through subdivision. Edges with other

@@ -11,6 +11,8 @@ namespace vorocrust {
 
 namespace {
 
+constexpr const char* kBoxGroup = "box";
+
 std::string format_point(const Point& p) {
   char text[96];
   std::snprintf(text, sizeof text, "(%.9g, %.9g, %.9g)", p.x(), p.y(), p.z());
@@ -73,7 +75,7 @@ SurfaceMesh enclose_in_box(const SurfaceMesh& input, const geometry::Box& box) {
                               corner & 4 ? box.hi.z() : box.lo.z());
   }
   const Index group = static_cast<Index>(out.groups.size());
-  out.groups.push_back({"box", ""});
+  out.groups.push_back({kBoxGroup, ""});
   // Each side as a quad of corner bits, counter-clockwise seen from outside.
   static constexpr int kSides[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                        {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
@@ -85,6 +87,15 @@ SurfaceMesh enclose_in_box(const SurfaceMesh& input, const geometry::Box& box) {
     }
   }
   return out;
+}
+
+std::vector<bool> box_faces(const SurfaceMesh& mesh) {
+  std::vector<bool> in_box(mesh.num_faces(), false);
+  for (Index f = 0; f < mesh.num_faces(); ++f) {
+    const FaceGroup& group = mesh.groups[mesh.face_group[f]];
+    in_box[f] = group.name == kBoxGroup && group.source_file.empty();
+  }
+  return in_box;
 }
 
 }  // namespace vorocrust

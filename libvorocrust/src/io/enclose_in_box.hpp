@@ -14,9 +14,15 @@
 // tenth of its diagonal, room enough for the protecting balls of the sheet and of the box not
 // to crowd each other.
 //
+// box_faces(mesh) flags the faces enclose_in_box added (the group it names "box", from no file),
+// also after steps that keep each face's group (cutting along self-intersections); all false
+// when there are none.
+//
 // Throws Error(InvalidGeometry) naming the first vertex that does not lie strictly inside the
 // box, and Error(Usage) for a box whose lower corner is not below its upper corner.
 #pragma once
+
+#include <vector>
 
 #include "geometry/box_tree.hpp"
 #include "vorocrust/surface_mesh.hpp"
@@ -26,5 +32,6 @@ namespace vorocrust {
 bool needs_box(const SurfaceMesh& input);
 geometry::Box default_box(const SurfaceMesh& input);
 SurfaceMesh enclose_in_box(const SurfaceMesh& input, const geometry::Box& box);
+std::vector<bool> box_faces(const SurfaceMesh& mesh);
 
 }  // namespace vorocrust

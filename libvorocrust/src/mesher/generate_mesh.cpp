@@ -115,8 +115,9 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
 
   // Features (paper 2.2). A smooth surface is smoothed before its features are found: what its
   // tessellation bends is then gone, and a fold that still bends past theta# is a crease after
-  // all (without one, balls either side of it are not co-smooth and shrink without end).
-  Strata strata = clock("features", [&] { return detect_strata(input, sharp_angle, detection); });
+  // all (without one, balls either side of it are not co-smooth and shrink without end). A box's
+  // sides are no part of the smooth surface: their edges stay creases.
+  Strata strata = clock("features", [&] { return detect_strata(input, sharp_angle, detection, box_faces(input)); });
 
   // Patch smoothing (paper 2.2): flatten the patches so nearby normals agree, features untouched.
   result.smoothed_input = input;
