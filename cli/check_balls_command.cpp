@@ -20,6 +20,7 @@ int run_check_balls(const CheckBallsArgs& args) {
   MeshOptions mesher;  // the same defaults as the run that made the balls
   mesher.smooth = args.smooth;
   mesher.sharp_angle_degrees = args.sharp_angle_degrees;
+  args.domain.apply(mesher);
   options.sharp_angle_degrees = mesher.sharp_angle();
   options.lipschitz = args.lipschitz;
   options.face_samples = args.face_samples;
@@ -29,11 +30,15 @@ int run_check_balls(const CheckBallsArgs& args) {
 
   const std::vector<std::filesystem::path> inputs(args.files.begin(), args.files.end() - 1);
   SurfaceMesh mesh = read_meshes(inputs);
-  // The contract assumes consistent orientation, which validation establishes; self-intersections
-  // do not change the conditions, so skip that (slow) check.
+  // The contract assumes consistent orientation, which validation establishes; the self-intersections
+  // are resolved below as the run resolved them, so validation skips that (slow) check.
   ValidationOptions validation;
   validation.check_self_intersections = false;
   (void)validate(mesh, validation);
+  // The balls cover the surface the run started from: the input in its box, cut along its
+  // self-intersections. A smoothed_surface.ply (--smooth) is that surface already: a sheet in it
+  // still has open edges, and would get a second box.
+  if (!args.smooth) mesh = prepare_domain(mesh, mesher);
   const std::vector<checker::CheckedBall> balls = checker::read_balls_csv(args.files.back());
 
   const checker::BallCheckReport report = checker::check_balls(mesh, balls, options);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "domain_args.hpp"
 #include "vorocrust/mesher.hpp"
 
 namespace vorocrust::cli {
@@ -23,6 +24,7 @@ struct CheckBallsArgs {
   std::size_t crease_samples = 50000;
   std::uint64_t seed = 1;
   bool json = false;
+  DomainArgs domain;  // as the run that made the balls: its box and self-intersections
 };
 
 int run_check_balls(const CheckBallsArgs& args);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "domain_args.hpp"
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/write_volume_mesh.hpp"
 
@@ -21,10 +22,9 @@ struct MeshArgs {
   std::string output_dir;
   MeshOptions options;
   bool quiet = false;
-  std::string self_intersections = "resolve";
   std::string stop_after;  // "" (everything), "balls" or "surface"
   std::string interior = "random";
-  std::vector<double> box;  // empty, or xmin ymin zmin xmax ymax zmax
+  DomainArgs domain;
   std::vector<std::string> formats = volume_format_names();
   std::vector<std::string> command_line;
 };

@@ -71,12 +71,7 @@ int main(int argc, char** argv) {
   mesh_cmd->add_option_function<int>(
       "--smoothing-iterations", [&](int rounds) { mesh.options.smoothing_iterations = rounds; },
       "Rounds of adaptive Loop subdivision inside smooth patches before refinement; default 0, or 6 with --smooth");
-  mesh_cmd->add_option("--box", mesh.box,
-                       "The domain around open sheets (terrains, faults, horizons): xmin ymin zmin xmax ymax zmax. "
-                       "Its sides join the surface, and what no material fills inside it becomes the material "
-                       "'domain', which a sheet splits. Default for an input with open edges: its bounding box "
-                       "grown by a tenth of its diagonal on every side")
-      ->expected(6);
+  add_domain_options(*mesh_cmd, mesh.domain);
   mesh_cmd->add_option("--interior", mesh.interior,
                        "Interior seeds: 'random' (Poisson-disk, graded from the surface inward), 'lattice' "
                        "(cubic, hex-dominant cells), 'cvt' (random, then Lloyd iterations)")
@@ -91,12 +86,6 @@ int main(int argc, char** argv) {
   mesh_cmd->add_option("--stop-after", mesh.stop_after, "Stop after a stage and write its output: 'balls' (balls.csv, balls.vtk) or 'surface' "
                        "(also seeds.csv, surface.obj, surface.ply)")
       ->check(CLI::IsMember({"balls", "surface"}));
-  mesh_cmd->add_option("--self-intersections", mesh.self_intersections,
-                       "Faces that cut through each other: 'resolve' cuts them along their intersection curves, which "
-                       "become creases, and joins each new piece of space to a region of the input; 'refuse' stops "
-                       "with exit code 4 naming them; 'keep' meshes them as they are")
-      ->check(CLI::IsMember({"resolve", "refuse", "keep"}))
-      ->capture_default_str();
   mesh_cmd->add_flag("-q,--quiet", mesh.quiet, "Print nothing but errors");
 
   CheckBallsArgs check;
@@ -107,8 +96,8 @@ int main(int argc, char** argv) {
       ->required()
       ->expected(2, CLI::detail::expected_max_vector_size);
   check_cmd->add_flag("--smooth", check.smooth,
-                      "Balls of a mesh --smooth run: the sharp angle defaults to that run's (60); check them "
-                      "against the smoothed_surface.ply it wrote");
+                      "Balls of a run that smoothed its input: give the smoothed_surface.ply it wrote, which is "
+                      "checked as it is (no box, no cutting); the sharp angle defaults to a --smooth run's (60)");
   check_cmd->add_option_function<double>(
       "--sharp-angle", [&](double degrees) { check.sharp_angle_degrees = degrees; },
       "Normal deviation in degrees (0,90) above which an edge is sharp; use the mesh's value (default 30, or 60 "
@@ -122,6 +111,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   check_cmd->add_option("--seed", check.seed, "Seed of the random samples")->capture_default_str();
   check_cmd->add_flag("--json", check.json, "Print one JSON object instead of text");
+  add_domain_options(*check_cmd, check.domain);
 
   QualityArgs quality;
   CLI::App* quality_cmd = app.add_subcommand(

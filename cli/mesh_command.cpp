@@ -34,10 +34,7 @@ int run_mesh(const MeshArgs& args) {
   options.interior = args.interior == "lattice" ? InteriorMode::Lattice
                      : args.interior == "cvt"   ? InteriorMode::Cvt
                                                 : InteriorMode::Random;
-  options.self_intersections = args.self_intersections == "refuse" ? SelfIntersections::Refuse
-                               : args.self_intersections == "keep" ? SelfIntersections::Keep
-                                                                   : SelfIntersections::Resolve;
-  if (args.box.size() == 6) options.box = {args.box[0], args.box[1], args.box[2], args.box[3], args.box[4], args.box[5]};
+  args.domain.apply(options);
   report.options = options;
   const std::filesystem::path report_path = std::filesystem::path(args.output_dir) / "report.json";
   // report.json is written whatever the outcome, so a failed run still says why.

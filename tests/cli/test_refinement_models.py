@@ -102,6 +102,7 @@ class RefinementMeetsTheBallConditions(unittest.TestCase):
             icosahedron = sum(region["volume"] for region in report["regions"])
             self.assertAlmostEqual(report["cells"]["volume"] / icosahedron, 1, delta=0.01)
 
+
     def test_smoothing_leaves_the_box_around_a_smooth_sheet(self):
         # gmsh_terrain is an open sheet, so it is meshed in a box. Smoothed with it as if the box
         # were part of the smooth surface, the cube rounded into a blob through the terrain and
@@ -112,6 +113,31 @@ class RefinementMeetsTheBallConditions(unittest.TestCase):
             self.assertEqual(features["smoothing_rounds_crossing"], 0)
             self.assertEqual(features["corners"], 8 + 4)  # the box's, and the four where the terrain's rim turns
             self.assert_conditions_hold(os.path.join(out, "smoothed_surface.ply"), out, "--smooth")
+
+    def test_balls_check_against_the_surface_the_run_started_from(self):
+        # Two cubes overlapping by half are cut along their intersection curves, and an open
+        # square gets the default box: check-balls starts from the same surfaces. Against the
+        # cubes as they cross, the balls break the conditions where the cut made creases.
+        with tempfile.TemporaryDirectory() as out:
+            cubes = os.path.join(out, "cubes.off")
+            write_off(cubes, [cube((0, 0, 0), 1), cube((0.5, 0.4, 0.3), 1)])
+            self.mesh_balls(cubes, out)
+            self.assert_conditions_hold(cubes, out)
+            keep = subprocess.run([BINARY, "check-balls", "--self-intersections", "keep", cubes,
+                                   os.path.join(out, "balls.csv")], capture_output=True, text=True, timeout=600)
+            self.assertEqual(keep.returncode, 8, keep.stdout + keep.stderr)
+        with tempfile.TemporaryDirectory() as out:
+            sheet = os.path.join(out, "sheet.off")
+            write_off(sheet, [([(0, 0, 0), (1, 0, 0), (1, 1, 0.2), (0, 1, 0.2)], [(0, 1, 2), (0, 2, 3)])])
+            self.mesh_balls(sheet, out)
+            self.assert_conditions_hold(sheet, out)
+
+
+def cube(corner, side):
+    """Vertices and outward triangles of an axis-aligned cube."""
+    points = [tuple(c + side * ((i >> k) & 1) for k, c in enumerate(corner)) for i in range(8)]
+    quads = [(0, 4, 6, 2), (1, 3, 7, 5), (0, 1, 5, 4), (2, 6, 7, 3), (0, 2, 3, 1), (4, 5, 7, 6)]
+    return points, [t for a, b, c, d in quads for t in ((a, b, c), (a, c, d))]
 
 
 def icosphere(level, radius, centre=(0, 0, 0)):

@@ -194,6 +194,13 @@ struct MeshResult {
   std::optional<CellQuality> cell_quality;
 };
 
+// The surface the pipeline starts from: `input` in its box (options.box, or the default box of an
+// input with open sheets), then cut along its self-intersections when options.self_intersections
+// is Resolve (`stats`, when given, says what the cutting did). The balls cover this surface (or
+// its smoothing), so `check-balls` checks them against it. Throws Error(InvalidGeometry) for a
+// vertex outside the box or faces the cutting cannot separate.
+SurfaceMesh prepare_domain(const SurfaceMesh& input, const MeshOptions& options, SelfIntersectionStats* stats = nullptr);
+
 // Runs the pipeline up to options.stop_after. Throws Error: Usage for options out of range,
 // Cancelled when progress returns false, InvalidGeometry when the input cannot be meshed.
 MeshResult generate_mesh(const SurfaceMesh& input, const MeshOptions& options, const ProgressCallback& progress = {});

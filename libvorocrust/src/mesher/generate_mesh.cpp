@@ -79,6 +79,20 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
 
 }  // namespace
 
+SurfaceMesh prepare_domain(const SurfaceMesh& model, const MeshOptions& options, SelfIntersectionStats* stats) {
+  SurfaceMesh input = model;
+  if (options.box) {
+    const auto& b = *options.box;
+    input = enclose_in_box(model, geometry::Box{Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5])});
+  } else if (needs_box(model)) {
+    input = enclose_in_box(model, default_box(model));
+  }
+  // Faces crossing each other cut along their intersection curves, the pieces of space between
+  // them joined to the input's regions.
+  if (options.self_intersections == SelfIntersections::Resolve) input = resolve_self_intersections(input, stats);
+  return input;
+}
+
 MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, const ProgressCallback& progress) {
   options.check();
   // Every parallel stage runs in this arena: a program that asks for n threads gets at most n,
@@ -92,19 +106,14 @@ namespace {
 MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, const ProgressCallback& progress) {
   MeshResult result;
   PhaseClock clock(result.timings);
-  // The domain: the model, in its box when it has open sheets or the caller gives one.
-  SurfaceMesh input = model;
-  if (options.box) {
-    const auto& b = *options.box;
-    input = enclose_in_box(model, geometry::Box{Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5])});
-  } else if (needs_box(model)) {
-    input = enclose_in_box(model, default_box(model));
-  }
-  // Faces crossing each other cut along their intersection curves, the pieces of space between
-  // them joined to the input's regions.
+  // The domain: the model in its box, its self-intersections resolved.
+  const auto prepare = [&] { return prepare_domain(model, options, &result.self_intersections); };
+  SurfaceMesh input;
   if (options.self_intersections == SelfIntersections::Resolve) {
     if (progress && !progress({"self-intersections", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
-    input = clock("self-intersections", [&] { return resolve_self_intersections(input, &result.self_intersections); });
+    input = clock("self-intersections", prepare);
+  } else {
+    input = prepare();
   }
   // The regions of space the surface cuts out, each side of each face labelled.
   result.regions = clock("regions", [&] { return label_regions(input); });

@@ -1,0 +1,31 @@
+#include "domain_args.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace vorocrust::cli {
+
+void DomainArgs::apply(MeshOptions& options) const {
+  options.self_intersections = self_intersections == "refuse" ? SelfIntersections::Refuse
+                               : self_intersections == "keep" ? SelfIntersections::Keep
+                                                              : SelfIntersections::Resolve;
+  if (box.size() == 6) options.box = {box[0], box[1], box[2], box[3], box[4], box[5]};
+}
+
+void add_domain_options(CLI::App& command, DomainArgs& args) {
+  command
+      .add_option("--box", args.box,
+                  "The domain around open sheets (terrains, faults, horizons): xmin ymin zmin xmax ymax zmax. "
+                  "Its sides join the surface, and what no material fills inside it becomes the material "
+                  "'domain', which a sheet splits. Default for an input with open edges: its bounding box "
+                  "grown by a tenth of its diagonal on every side")
+      ->expected(6);
+  command
+      .add_option("--self-intersections", args.self_intersections,
+                  "Faces that cut through each other: 'resolve' cuts them along their intersection curves, which "
+                  "become creases, and joins each new piece of space to a region of the input; 'refuse' stops "
+                  "with exit code 4 naming them; 'keep' meshes them as they are")
+      ->check(CLI::IsMember({"resolve", "refuse", "keep"}))
+      ->capture_default_str();
+}
+
+}  // namespace vorocrust::cli
