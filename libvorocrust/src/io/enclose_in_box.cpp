@@ -91,7 +91,8 @@ SurfaceMesh enclose_in_box(const SurfaceMesh& input, const geometry::Box& box) {
 
 std::vector<bool> box_faces(const SurfaceMesh& mesh) {
   std::vector<bool> in_box(mesh.num_faces(), false);
-  for (Index f = 0; f < mesh.num_faces(); ++f) {
+  for (Index f = 0; f < mesh.num_faces() && f < mesh.face_group.size(); ++f) {
+    if (mesh.face_group[f] >= mesh.groups.size()) continue;
     const FaceGroup& group = mesh.groups[mesh.face_group[f]];
     in_box[f] = group.name == kBoxGroup && group.source_file.empty();
   }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
 
 #include "geometry/ray_cast.hpp"
 #include "regions/nest_shells.hpp"
@@ -108,6 +109,7 @@ std::vector<RegionSummary> find_regions(const SurfaceMesh& mesh) {
 }
 
 bool region_labels_hold(const SurfaceMesh& mesh) {
+  if (!mesh.has_regions() || mesh.region_names.empty()) return true;  // no labels to break
   SurfaceMesh afresh = mesh;
   try {
     label_regions(afresh);
@@ -116,13 +118,19 @@ bool region_labels_hold(const SurfaceMesh& mesh) {
     throw;
   }
   // Labels are numbered by the order label_regions meets the pieces, so they are compared by name.
-  const auto& was = mesh.region_names;
-  const auto& now = afresh.region_names;
-  if (now.front() != was.front()) return false;
+  const auto name = [](const SurfaceMesh& m, std::int32_t label) -> const std::string* {
+    return label >= 0 && static_cast<std::size_t>(label) < m.region_names.size() ? &m.region_names[label] : nullptr;
+  };
+  const auto same = [&](std::int32_t was, std::int32_t now) {
+    const std::string* a = name(mesh, was);
+    const std::string* b = name(afresh, now);
+    return a && b && *a == *b;
+  };
+  if (!same(0, 0)) return false;
   for (Index f = 0; f < mesh.num_faces(); ++f) {
     const RegionPair& a = mesh.face_regions[f];
     const RegionPair& b = afresh.face_regions[f];
-    if (now[b.back] != was[a.back] || now[b.front] != was[a.front]) return false;
+    if (!same(a.back, b.back) || !same(a.front, b.front)) return false;
   }
   return true;
 }

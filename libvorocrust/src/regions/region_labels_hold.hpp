@@ -11,7 +11,8 @@
 
 namespace vorocrust {
 
-// `mesh` carries a label on every side (label_regions ran on it or on the mesh it came from).
+// `mesh` carries a label on every side (label_regions ran on it or on the mesh it came from); a
+// mesh without labels has none to break.
 bool region_labels_hold(const SurfaceMesh& mesh);
 
 }  // namespace vorocrust
