@@ -59,4 +59,7 @@ struct SurfaceMesh {
 // Where a face came from, "bunny.off line 12 (face 7)", for messages.
 std::string describe_face(const SurfaceMesh& mesh, std::size_t face);
 
+// A point as messages give it, "(0.1, -2, 3.25)", to 9 significant digits.
+std::string describe_point(const Point& p);
+
 }  // namespace vorocrust

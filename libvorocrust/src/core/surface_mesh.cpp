@@ -1,5 +1,6 @@
 #include "vorocrust/surface_mesh.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <utility>
 
@@ -15,6 +16,12 @@ void SurfaceMesh::add_triangle(const Triangle& t, Index group, std::uint32_t lin
 void SurfaceMesh::flip(std::size_t face) {
   std::swap(triangles[face][1], triangles[face][2]);
   if (!face_regions.empty()) std::swap(face_regions[face].back, face_regions[face].front);
+}
+
+std::string describe_point(const Point& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.9g, %.9g, %.9g)", p.x(), p.y(), p.z());
+  return text;
 }
 
 std::string describe_face(const SurfaceMesh& mesh, std::size_t face) {

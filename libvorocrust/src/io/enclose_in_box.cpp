@@ -1,7 +1,6 @@
 // The box around open sheets (paper section 3, Figure 17).
 #include "io/enclose_in_box.hpp"
 
-#include <cstdio>
 #include <string>
 
 #include "core/edge_topology.hpp"
@@ -12,12 +11,6 @@ namespace vorocrust {
 namespace {
 
 constexpr const char* kBoxGroup = "box";
-
-std::string format_point(const Point& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.9g, %.9g, %.9g)", p.x(), p.y(), p.z());
-  return text;
-}
 
 }  // namespace
 
@@ -40,15 +33,15 @@ geometry::Box default_box(const SurfaceMesh& input) {
 
 SurfaceMesh enclose_in_box(const SurfaceMesh& input, const geometry::Box& box) {
   if (!((box.lo.array() < box.hi.array()).all())) {
-    throw Error(Error::Kind::Usage, "--box: the lower corner " + format_point(box.lo) +
-                                        " must lie below the upper corner " + format_point(box.hi) + " in x, y and z");
+    throw Error(Error::Kind::Usage, "--box: the lower corner " + describe_point(box.lo) +
+                                        " must lie below the upper corner " + describe_point(box.hi) + " in x, y and z");
   }
   for (std::size_t v = 0; v < input.vertices.size(); ++v) {
     const Point& p = input.vertices[v];
     if (!((box.lo.array() < p.array()).all() && (p.array() < box.hi.array()).all())) {
       throw Error(Error::Kind::InvalidGeometry,
-                  "vertex " + std::to_string(v) + " at " + format_point(p) + " does not lie inside the box " +
-                      format_point(box.lo) + " .. " + format_point(box.hi) + ": the box must hold the whole model");
+                  "vertex " + std::to_string(v) + " at " + describe_point(p) + " does not lie inside the box " +
+                      describe_point(box.lo) + " .. " + describe_point(box.hi) + ": the box must hold the whole model");
     }
   }
   SurfaceMesh out = input;

@@ -600,12 +600,20 @@ void BallRefinement::Impl::check_pool_size(const std::vector<Subface>& pool, con
   bool runaway = pool.size() > runaway_pool && depth >= 12;
   for (std::size_t d = depth; runaway && d + 4 > depth; --d) runaway = sizes[d] >= 1.8 * static_cast<double>(sizes[d - 1]);
   if (!runaway && pool.size() <= std::max<std::size_t>(8'000'000, 60 * mesh_.num_faces())) return;
-  const Subface& where = pool.front();
-  const Index face = where.is_segment() ? strata_.topology.faces_of(where.element)[0] : where.element;
+  // The face the pieces crowd on most is where the balls cannot converge; the first piece may lie
+  // anywhere (on igl_camelhead a whole head's width from the mouth's crevice, where they crowd).
+  std::vector<std::size_t> pieces_on(mesh_.num_faces(), 0);
+  for (const Subface& piece : pool) {
+    ++pieces_on[piece.is_segment() ? strata_.topology.faces_of(piece.element)[0] : piece.element];
+  }
+  const auto face = static_cast<Index>(std::max_element(pieces_on.begin(), pieces_on.end()) - pieces_on.begin());
+  const Triangle& t = mesh_.triangles[face];
+  const Point centre = (mesh_.vertices[t[0]] + mesh_.vertices[t[1]] + mesh_.vertices[t[2]]) / 3;
   throw Error(Error::Kind::InvalidGeometry,
               "refinement cannot converge: " + std::to_string(pool.size()) + " pieces of the surface stay " +
-                  "uncovered after " + std::to_string(depth) + " subdivisions, first near " +
-                  describe_face(mesh_, face) + "; surfaces that intersect or nearly touch are the usual cause",
+                  "uncovered after " + std::to_string(depth) + " subdivisions, most of them (" +
+                  std::to_string(pieces_on[face]) + ") on " + describe_face(mesh_, face) + " near " +
+                  describe_point(centre) + "; surfaces that intersect or nearly touch are the usual cause",
               {.face = face});
 }
 
