@@ -246,7 +246,7 @@ class Mesh(unittest.TestCase):
             r = run("mesh", pierced, "-o", out, "--self-intersections", "keep", "--stop-after", "balls")
             self.assertEqual(r.returncode, 4, r.stderr)
             self.assertIn("refinement cannot converge", r.stderr)
-            self.assertRegex(r.stderr, r"most of them \(\d+\) on face \d+ \(cube_pierced.off line \d+\) near \(")
+            self.assertRegex(r.stderr, r"crowding most on face \d+ \(cube_pierced.off line \d+\) \(\d+ pieces\) near \(")
 
     def test_unreadable_input_still_leaves_a_report(self):
         with tempfile.TemporaryDirectory() as out:

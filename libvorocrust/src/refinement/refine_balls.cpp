@@ -611,8 +611,8 @@ void BallRefinement::Impl::check_pool_size(const std::vector<Subface>& pool, con
   const Point centre = (mesh_.vertices[t[0]] + mesh_.vertices[t[1]] + mesh_.vertices[t[2]]) / 3;
   throw Error(Error::Kind::InvalidGeometry,
               "refinement cannot converge: " + std::to_string(pool.size()) + " pieces of the surface stay " +
-                  "uncovered after " + std::to_string(depth) + " subdivisions, most of them (" +
-                  std::to_string(pieces_on[face]) + ") on " + describe_face(mesh_, face) + " near " +
+                  "uncovered after " + std::to_string(depth) + " subdivisions, crowding most on " +
+                  describe_face(mesh_, face) + " (" + std::to_string(pieces_on[face]) + " pieces) near " +
                   describe_point(centre) + "; surfaces that intersect or nearly touch are the usual cause",
               {.face = face});
 }
