@@ -36,9 +36,8 @@ int run_check_balls(const CheckBallsArgs& args) {
   validation.check_self_intersections = false;
   (void)validate(mesh, validation);
   // The balls cover the surface the run started from: the input in its box, cut along its
-  // self-intersections. A smoothed_surface.ply (--smooth) is that surface already: a sheet in it
-  // still has open edges, and would get a second box.
-  if (!args.smooth) mesh = prepare_domain(mesh, mesher);
+  // self-intersections (a smoothed_surface.ply is that already, and stays as it is).
+  mesh = prepare_domain(mesh, mesher);
   const std::vector<checker::CheckedBall> balls = checker::read_balls_csv(args.files.back());
 
   const checker::BallCheckReport report = checker::check_balls(mesh, balls, options);

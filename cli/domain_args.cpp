@@ -11,7 +11,7 @@ void DomainArgs::apply(MeshOptions& options) const {
   if (box.size() == 6) options.box = {box[0], box[1], box[2], box[3], box[4], box[5]};
 }
 
-void add_domain_options(CLI::App& command, DomainArgs& args) {
+void add_domain_options(CLI::App& command, DomainArgs& args, bool refuse) {
   command
       .add_option("--box", args.box,
                   "The domain around open sheets (terrains, faults, horizons): xmin ymin zmin xmax ymax zmax. "
@@ -19,12 +19,15 @@ void add_domain_options(CLI::App& command, DomainArgs& args) {
                   "'domain', which a sheet splits. Default for an input with open edges: its bounding box "
                   "grown by a tenth of its diagonal on every side")
       ->expected(6);
-  command
-      .add_option("--self-intersections", args.self_intersections,
-                  "Faces that cut through each other: 'resolve' cuts them along their intersection curves, which "
-                  "become creases, and joins each new piece of space to a region of the input; 'refuse' stops "
-                  "with exit code 4 naming them; 'keep' meshes them as they are")
-      ->check(CLI::IsMember({"resolve", "refuse", "keep"}))
+  const std::string help =
+      "Faces that cut through each other: 'resolve' cuts them along their intersection curves, which become creases, "
+      "and joins each new piece of space to a region of the input; " +
+      std::string(refuse ? "'refuse' stops with exit code 4 naming them; 'keep' meshes them as they are"
+                         : "'keep' takes them as they are (as the run did)");
+  const std::vector<std::string> modes =
+      refuse ? std::vector<std::string>{"resolve", "refuse", "keep"} : std::vector<std::string>{"resolve", "keep"};
+  command.add_option("--self-intersections", args.self_intersections, help)
+      ->check(CLI::IsMember(modes))
       ->capture_default_str();
 }
 

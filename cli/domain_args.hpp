@@ -21,7 +21,8 @@ struct DomainArgs {
   void apply(MeshOptions& options) const;
 };
 
-// --box and --self-intersections on `command`.
-void add_domain_options(CLI::App& command, DomainArgs& args);
+// --box and --self-intersections on `command`; `refuse` only where the command can stop for
+// crossing faces (`mesh`: check-balls checks balls a run made, which a refused run made none of).
+void add_domain_options(CLI::App& command, DomainArgs& args, bool refuse);
 
 }  // namespace vorocrust::cli

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
   mesh_cmd->add_option_function<int>(
       "--smoothing-iterations", [&](int rounds) { mesh.options.smoothing_iterations = rounds; },
       "Rounds of adaptive Loop subdivision inside smooth patches before refinement; default 0, or 6 with --smooth");
-  add_domain_options(*mesh_cmd, mesh.domain);
+  add_domain_options(*mesh_cmd, mesh.domain, /*refuse=*/true);
   mesh_cmd->add_option("--interior", mesh.interior,
                        "Interior seeds: 'random' (Poisson-disk, graded from the surface inward), 'lattice' "
                        "(cubic, hex-dominant cells), 'cvt' (random, then Lloyd iterations)")
@@ -96,8 +96,8 @@ int main(int argc, char** argv) {
       ->required()
       ->expected(2, CLI::detail::expected_max_vector_size);
   check_cmd->add_flag("--smooth", check.smooth,
-                      "Balls of a run that smoothed its input: give the smoothed_surface.ply it wrote, which is "
-                      "checked as it is (no box, no cutting); the sharp angle defaults to a --smooth run's (60)");
+                      "Balls of a mesh --smooth run: the sharp angle defaults to that run's (60); check them "
+                      "against the smoothed_surface.ply it wrote");
   check_cmd->add_option_function<double>(
       "--sharp-angle", [&](double degrees) { check.sharp_angle_degrees = degrees; },
       "Normal deviation in degrees (0,90) above which an edge is sharp; use the mesh's value (default 30, or 60 "
@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   check_cmd->add_option("--seed", check.seed, "Seed of the random samples")->capture_default_str();
   check_cmd->add_flag("--json", check.json, "Print one JSON object instead of text");
-  add_domain_options(*check_cmd, check.domain);
+  add_domain_options(*check_cmd, check.domain, /*refuse=*/false);
 
   QualityArgs quality;
   CLI::App* quality_cmd = app.add_subcommand(

@@ -36,6 +36,28 @@ TEST(EncloseInBox, AnOpenSheetNeedsABoxAClosedSurfaceNone) {
   EXPECT_FALSE(needs_box(tetrahedron));
 }
 
+TEST(EncloseInBox, ASheetInItsBoxHoldsItsBoxAndNeedsNoOther) {
+  // A run's smoothed surface is the sheet in its box again; smoothing may split the box's sides.
+  const SurfaceMesh sheet = one_triangle_sheet();
+  EXPECT_FALSE(holds_its_box(sheet));
+  SurfaceMesh boxed = enclose_in_box(sheet, default_box(sheet));
+  EXPECT_TRUE(holds_its_box(boxed));
+  const Index last = static_cast<Index>(boxed.num_faces() - 1);
+  const Triangle t = boxed.triangles[last];
+  const auto centre = static_cast<Index>(boxed.vertices.size());
+  boxed.vertices.push_back((boxed.vertices[t[0]] + boxed.vertices[t[1]] + boxed.vertices[t[2]]) / 3);
+  boxed.triangles[last] = {t[0], t[1], centre};
+  boxed.add_triangle({t[1], t[2], centre}, boxed.face_group[last]);
+  boxed.add_triangle({t[2], t[0], centre}, boxed.face_group[last]);
+  EXPECT_TRUE(holds_its_box(boxed));
+  // A box missing a side is no box: the sheet goes in one of its own.
+  boxed.triangles.erase(boxed.triangles.begin() + last);
+  boxed.face_group.erase(boxed.face_group.begin() + last);
+  boxed.face_line.erase(boxed.face_line.begin() + last);
+  boxed.face_regions.erase(boxed.face_regions.begin() + last);
+  EXPECT_FALSE(holds_its_box(boxed));
+}
+
 TEST(EncloseInBox, TheDefaultBoxLeavesATenthOfTheDiagonalOnEverySide) {
   const geometry::Box box = default_box(one_triangle_sheet());
   const double margin = 0.1 * Point(1, 1, 0.5).norm();

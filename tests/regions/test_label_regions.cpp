@@ -99,7 +99,8 @@ TEST(RegionLabelsHold, OnlyWhileNoShellIsCarriedAcrossAnother) {
   EXPECT_TRUE(region_labels_hold(labelled));
   EXPECT_TRUE(region_labels_hold(moved(0, 16, [](const Point& p) -> Point { return p + Point(5, -2, 1); })));
   EXPECT_TRUE(region_labels_hold(moved(8, 16, [](const Point& p) -> Point { return p + Point(0.5, 0, 0); })));
-  // The inner box out beside the outer one: its outside, labelled 1, faces the unbounded region.
+  // The inner box out beside the outer one: its outside, labelled 1, and the outer box's,
+  // labelled 0, face one region of space.
   EXPECT_FALSE(region_labels_hold(moved(8, 16, [](const Point& p) -> Point { return p + Point(4, 0, 0); })));
   // The outer box shrunk inside the inner one, crossing nothing: the nesting is turned over.
   EXPECT_FALSE(region_labels_hold(moved(0, 8, [](const Point& p) -> Point { return Point(1.25, 1.25, 1.25) + p / 6; })));

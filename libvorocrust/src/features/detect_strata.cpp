@@ -192,7 +192,7 @@ Strata build_strata(const SurfaceMesh& mesh, std::vector<bool> sharp_edge_by_top
 Strata detect_strata(const SurfaceMesh& mesh, double sharp_angle, FeatureDetection detection,
                      const std::vector<bool>& judged_by_angle) {
   const bool by_angle = detection == FeatureDetection::SharpAndBoundary;
-  const auto judged = [&](Index f) { return by_angle || (!judged_by_angle.empty() && judged_by_angle[f]); };
+  const auto judged = [&](Index f) { return by_angle || (f < judged_by_angle.size() && judged_by_angle[f]); };
   Strata s;
   compute_topology_and_normals(mesh, s);
   const EdgeTopology& topo = s.topology;

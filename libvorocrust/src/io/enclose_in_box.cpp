@@ -1,6 +1,8 @@
 // The box around open sheets (paper section 3, Figure 17).
 #include "io/enclose_in_box.hpp"
 
+#include <array>
+#include <cmath>
 #include <string>
 
 #include "core/edge_topology.hpp"
@@ -20,6 +22,32 @@ bool needs_box(const SurfaceMesh& input) {
     if (topology.is_boundary(e)) return true;
   }
   return false;
+}
+
+bool holds_its_box(const SurfaceMesh& input) {
+  if (input.vertices.empty()) return false;
+  geometry::Box bounds;
+  for (const Point& p : input.vertices) bounds.include(p);
+  const Point size = bounds.hi - bounds.lo;
+  // The area of faces flat on each side of the bounding box, against the side's own.
+  std::array<double, 6> covered{};
+  for (const Triangle& t : input.triangles) {
+    const Point &a = input.vertices[t[0]], &b = input.vertices[t[1]], &c = input.vertices[t[2]];
+    for (int k = 0; k < 3; ++k) {
+      for (int side = 0; side < 2; ++side) {
+        const double plane = side ? bounds.hi[k] : bounds.lo[k];
+        if (a[k] == plane && b[k] == plane && c[k] == plane) covered[2 * k + side] += (b - a).cross(c - a).norm() / 2;
+      }
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    const double area = size[(k + 1) % 3] * size[(k + 2) % 3];
+    if (!(area > 0)) return false;
+    for (int side = 0; side < 2; ++side) {
+      if (std::abs(covered[2 * k + side] - area) > 1e-9 * area) return false;
+    }
+  }
+  return true;
 }
 
 geometry::Box default_box(const SurfaceMesh& input) {

@@ -14,6 +14,11 @@
 // tenth of its diagonal, room enough for the protecting balls of the sheet and of the box not
 // to crowd each other.
 //
+// holds_its_box(input) says whether an input already holds a box around all of it, as
+// enclose_in_box makes it: faces lying flat on the six sides of its bounding box cover each side
+// whole (a run's smoothed_surface.ply, whose box smoothing may have split but not moved). Such an
+// input needs no other box, though its sheets have open edges.
+//
 // box_faces(mesh) flags the faces enclose_in_box added (the group it names "box", from no file),
 // also after steps that keep each face's group (cutting along self-intersections); all false
 // when there are none.
@@ -30,6 +35,7 @@
 namespace vorocrust {
 
 bool needs_box(const SurfaceMesh& input);
+bool holds_its_box(const SurfaceMesh& input);
 geometry::Box default_box(const SurfaceMesh& input);
 SurfaceMesh enclose_in_box(const SurfaceMesh& input, const geometry::Box& box);
 std::vector<bool> box_faces(const SurfaceMesh& mesh);

@@ -84,7 +84,7 @@ SurfaceMesh prepare_domain(const SurfaceMesh& model, const MeshOptions& options,
   if (options.box) {
     const auto& b = *options.box;
     input = enclose_in_box(model, geometry::Box{Point(b[0], b[1], b[2]), Point(b[3], b[4], b[5])});
-  } else if (needs_box(model)) {
+  } else if (needs_box(model) && !holds_its_box(model)) {
     input = enclose_in_box(model, default_box(model));
   }
   // Faces crossing each other cut along their intersection curves, the pieces of space between
