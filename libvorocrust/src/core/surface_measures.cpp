@@ -2,12 +2,19 @@
 
 namespace vorocrust {
 
+double face_area(const SurfaceMesh& mesh, Index face) {
+  const Triangle& t = mesh.triangles[face];
+  return 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+}
+
+Point face_centroid(const SurfaceMesh& mesh, Index face) {
+  const Triangle& t = mesh.triangles[face];
+  return (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3;
+}
+
 double surface_area(const SurfaceMesh& mesh, const std::vector<Index>& faces) {
   double area = 0;
-  for (Index f : faces) {
-    const Triangle& t = mesh.triangles[f];
-    area += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
-  }
+  for (Index f : faces) area += face_area(mesh, f);
   return area;
 }
 

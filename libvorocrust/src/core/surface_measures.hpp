@@ -7,6 +7,8 @@
 
 namespace vorocrust {
 
+double face_area(const SurfaceMesh& mesh, Index face);
+Point face_centroid(const SurfaceMesh& mesh, Index face);
 double surface_area(const SurfaceMesh& mesh, const std::vector<Index>& faces);
 
 // Signed volume bounded by `faces` (positive when their normals point outward); meaningful for

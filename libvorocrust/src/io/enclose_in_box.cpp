@@ -4,8 +4,10 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/edge_topology.hpp"
+#include "core/surface_measures.hpp"
 #include "vorocrust/error.hpp"
 
 namespace vorocrust {
@@ -13,6 +15,12 @@ namespace vorocrust {
 namespace {
 
 constexpr const char* kBoxGroup = "box";
+
+geometry::Box bounds_of(const SurfaceMesh& input) {
+  geometry::Box box;
+  for (const Point& p : input.vertices) box.include(p);
+  return box;
+}
 
 }  // namespace
 
@@ -26,17 +34,17 @@ bool needs_box(const SurfaceMesh& input) {
 
 bool holds_its_box(const SurfaceMesh& input) {
   if (input.vertices.empty()) return false;
-  geometry::Box bounds;
-  for (const Point& p : input.vertices) bounds.include(p);
+  const geometry::Box bounds = bounds_of(input);
   const Point size = bounds.hi - bounds.lo;
-  // The area of faces flat on each side of the bounding box, against the side's own.
-  std::array<double, 6> covered{};
-  for (const Triangle& t : input.triangles) {
-    const Point &a = input.vertices[t[0]], &b = input.vertices[t[1]], &c = input.vertices[t[2]];
+  // The faces flat on each side of the bounding box, whose area must be the side's own.
+  std::array<std::vector<Index>, 6> flat;
+  for (Index f = 0; f < input.num_faces(); ++f) {
+    const Triangle& t = input.triangles[f];
     for (int k = 0; k < 3; ++k) {
       for (int side = 0; side < 2; ++side) {
         const double plane = side ? bounds.hi[k] : bounds.lo[k];
-        if (a[k] == plane && b[k] == plane && c[k] == plane) covered[2 * k + side] += (b - a).cross(c - a).norm() / 2;
+        const auto on = [&](Index v) { return input.vertices[v][k] == plane; };
+        if (on(t[0]) && on(t[1]) && on(t[2])) flat[2 * k + side].push_back(f);
       }
     }
   }
@@ -44,15 +52,14 @@ bool holds_its_box(const SurfaceMesh& input) {
     const double area = size[(k + 1) % 3] * size[(k + 2) % 3];
     if (!(area > 0)) return false;
     for (int side = 0; side < 2; ++side) {
-      if (std::abs(covered[2 * k + side] - area) > 1e-9 * area) return false;
+      if (std::abs(surface_area(input, flat[2 * k + side]) - area) > 1e-9 * area) return false;
     }
   }
   return true;
 }
 
 geometry::Box default_box(const SurfaceMesh& input) {
-  geometry::Box box;
-  for (const Point& p : input.vertices) box.include(p);
+  geometry::Box box = bounds_of(input);
   const Point margin = Point::Constant(0.1 * (box.hi - box.lo).norm());
   box.lo -= margin;
   box.hi += margin;

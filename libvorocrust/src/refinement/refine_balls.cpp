@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/surface_measures.hpp"
 #include "geometry/box_tree.hpp"
 #include "refinement/ball_index.hpp"
 #include "refinement/subface.hpp"
@@ -607,13 +608,11 @@ void BallRefinement::Impl::check_pool_size(const std::vector<Subface>& pool, con
     ++pieces_on[piece.is_segment() ? strata_.topology.faces_of(piece.element)[0] : piece.element];
   }
   const auto face = static_cast<Index>(std::max_element(pieces_on.begin(), pieces_on.end()) - pieces_on.begin());
-  const Triangle& t = mesh_.triangles[face];
-  const Point centre = (mesh_.vertices[t[0]] + mesh_.vertices[t[1]] + mesh_.vertices[t[2]]) / 3;
   throw Error(Error::Kind::InvalidGeometry,
               "refinement cannot converge: " + std::to_string(pool.size()) + " pieces of the surface stay " +
                   "uncovered after " + std::to_string(depth) + " subdivisions, crowding most on " +
                   describe_face(mesh_, face) + " (" + std::to_string(pieces_on[face]) + " pieces) near " +
-                  describe_point(centre) + "; surfaces that intersect or nearly touch are the usual cause",
+                  describe_point(face_centroid(mesh_, face)) + "; surfaces that intersect or nearly touch are the usual cause",
               {.face = face});
 }
 

@@ -5,21 +5,12 @@
 #include <optional>
 
 #include "core/face_components.hpp"
+#include "core/surface_measures.hpp"
 #include "core/union_find.hpp"
 
 namespace vorocrust::regions {
 
 namespace {
-
-Point centroid(const SurfaceMesh& mesh, Index f) {
-  const Triangle& t = mesh.triangles[f];
-  return (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3;
-}
-
-double area(const SurfaceMesh& mesh, Index f) {
-  const Triangle& t = mesh.triangles[f];
-  return (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
-}
 
 // Faces of a part that rays from afar aim at before the part's outer shell is guessed by volume.
 constexpr std::size_t kAimedFaces = 8;
@@ -38,7 +29,7 @@ class Nesting {
     // Rays aim at a part's largest faces, whose centroids lie well inside them: those come first
     // (ties by index, as the part lists its faces).
     std::vector<double> areas(mesh.num_faces());
-    for (Index f = 0; f < mesh.num_faces(); ++f) areas[f] = area(mesh, f);
+    for (Index f = 0; f < mesh.num_faces(); ++f) areas[f] = face_area(mesh, f);
     const auto larger = [&](Index a, Index b) { return areas[a] > areas[b] || (areas[a] == areas[b] && a < b); };
     for (auto& faces : parts_.faces) {
       std::partial_sort(faces.begin(), faces.begin() + std::min(faces.size(), kAimedFaces), faces.end(), larger);
@@ -82,7 +73,7 @@ class Nesting {
     const double reach = 2 * (bounds_.hi - bounds_.lo).norm() + 1;
     const std::vector<Index>& faces = parts_.faces[c];
     for (std::size_t k = 0; k < std::min(faces.size(), kAimedFaces); ++k) {
-      const Point target = centroid(mesh_, faces[k]);
+      const Point target = face_centroid(mesh_, faces[k]);
       for (std::size_t d = 0; d < geometry::kGenericDirections.size(); ++d) {
         const Point direction = generic_direction(d);
         const Point origin = target + reach * direction;  // outside the bounding box
@@ -106,7 +97,7 @@ class Nesting {
   // The innermost bounded shell of another part around part c, if any.
   std::optional<Index> container(Index c, const std::vector<bool>& outer) const {
     const std::vector<Index>& faces = parts_.faces[c];
-    const Point from = centroid(mesh_, faces.front());
+    const Point from = face_centroid(mesh_, faces.front());
     std::optional<std::vector<geometry::RayHit>> chosen;
     for (std::size_t d = 0; d < geometry::kGenericDirections.size() && !chosen; ++d) {
       std::vector<geometry::RayHit> hits = rays_.all_hits(from, generic_direction(d));
