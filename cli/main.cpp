@@ -71,6 +71,10 @@ int main(int argc, char** argv) {
   mesh_cmd->add_option_function<int>(
       "--smoothing-iterations", [&](int rounds) { mesh.options.smoothing_iterations = rounds; },
       "Rounds of adaptive Loop subdivision inside smooth patches before refinement; default 0, or 6 with --smooth");
+  mesh_cmd->add_option_function<double>(
+      "--min-triangle-angle", [&](double degrees) { mesh.options.min_triangle_angle_degrees = degrees; },
+      "Split surface triangles away from features with an angle below this (degrees, 0 to 30; 0: none) by "
+      "shrinking the balls that cover their circumcentres; default 0, or 30 with --smooth");
   add_domain_options(*mesh_cmd, mesh.domain, /*refuse=*/true);
   mesh_cmd->add_option("--interior", mesh.interior,
                        "Interior seeds: 'random' (Poisson-disk, graded from the surface inward), 'lattice' "

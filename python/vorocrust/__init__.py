@@ -82,7 +82,7 @@ OUTPUT_FORMATS = {
 
 
 def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTIONS["smooth"], sharp_angle=None,
-         max_size=None, sizing=None, smoothing_iterations=None,
+         max_size=None, sizing=None, smoothing_iterations=None, min_triangle_angle=None,
          interior=DEFAULT_OPTIONS["interior"], cvt_iterations=DEFAULT_OPTIONS["cvt_iterations"],
          stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
          self_intersections=DEFAULT_OPTIONS["self_intersections"], box=None, progress=None):
@@ -100,6 +100,10 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTION
     sizing: a sizing file of lines "x y z size", interpolated (--sizing).
     smoothing_iterations: rounds of adaptive Loop subdivision inside smooth patches; None: none,
         or DEFAULT_OPTIONS["smooth_smoothing_iterations"] when smooth.
+    min_triangle_angle: surface triangles away from features with an angle below this many
+        degrees (0 to 30) are split by shrinking the balls that cover their circumcentres
+        (--min-triangle-angle); None: DEFAULT_OPTIONS["min_triangle_angle"] (0, none), or
+        ["smooth_min_triangle_angle"] (30) when smooth.
     interior: how the volume is seeded: "random", "lattice" or "cvt" (paper 2.5).
     cvt_iterations: Lloyd iterations of interior="cvt".
     stop_after: "balls", "surface" or "cells" (the whole mesh).
@@ -129,6 +133,7 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTION
         sharp_angle=None if sharp_angle is None else float(sharp_angle),
         max_size=None if max_size is None or math.isinf(max_size) else float(max_size), sizing=sizing,
         smoothing_iterations=None if smoothing_iterations is None else int(smoothing_iterations),
+        min_triangle_angle=None if min_triangle_angle is None else float(min_triangle_angle),
         interior=interior,
         cvt_iterations=int(cvt_iterations), stop_after=stop_after, seed=int(seed), threads=int(threads),
         self_intersections=self_intersections,

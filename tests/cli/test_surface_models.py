@@ -21,18 +21,25 @@ BINARY, MODELS = sys.argv[1:3]
 del sys.argv[1:3]
 
 # model, options, floor for Q min, ceiling for the Hausdorff distance in % of the diagonal,
-# floor for the smallest angle in degrees.
-# Sharp models use the default rules; the scanned bunny is meshed as the smooth surface it is
-# (--smooth: no creases from its decimation, 60 degrees and 6 rounds of Loop subdivision, as the
-# paper meshes smooth models). By the default rules it keeps 1 090 corners at 30 degrees and 187
-# at 60, and its worst triangles sit there (Q min 0.03 to 0.09, smallest angle 1 to 3 degrees).
+# floor for the smallest angle in degrees, ceiling for the share of angles below 30 degrees in %.
+# Sharp models use the default rules; their worst triangles sit at creases and corners, where
+# the protecting balls set the spacing (the public implementation's sandia_bracket: 6.8 % below
+# 30 degrees). The smooth models are meshed as the smooth surfaces they are (--smooth: no creases
+# from their tessellation, 60 degrees, 6 rounds of Loop subdivision and skinny triangles split,
+# as the paper meshes smooth models), and must reach the paper's smooth figures: at most 0.1 %
+# of angles below 30 degrees, Q min at least 0.4. By the default rules igl_bunny keeps 1 090
+# corners at 30 degrees and 187 at 60, and its worst triangles sit there (Q min 0.03 to 0.09,
+# smallest angle 1 to 3 degrees). directional_bimba's Hausdorff distance (1.56 %) is its
+# smoothing's: Loop's rules move every vertex of so coarse a mesh (697 vertices).
 CASES = [
-    ("cgal_joint.off", [], 0.15, 1.0, 4),
+    ("cgal_joint.off", [], 0.15, 1.0, 4, 8),
     # Q min on fandisk spans 0.10 to 0.18 over seeds 1 to 4: one triangle decides it.
-    ("cgal_fandisk.off", [], 0.1, 1.0, 3),
-    ("sandia_bracket.obj", [], 0.12, 1.0, 3),
-    ("sandia_torus.obj", [], 0.35, 1.0, 20),
-    ("igl_bunny.off", ["--smooth"], 0.3, 1.0, 20),
+    ("cgal_fandisk.off", [], 0.1, 1.0, 3, 9),
+    ("sandia_bracket.obj", [], 0.12, 1.0, 3, 9),
+    ("sandia_torus.obj", [], 0.35, 1.0, 20, 1),
+    ("sandia_torus.obj", ["--smooth"], 0.4, 1.0, 28, 0.1),
+    ("igl_bunny.off", ["--smooth"], 0.4, 1.0, 25, 0.1),
+    ("directional_bimba.off", ["--smooth"], 0.4, 1.7, 25, 0.1),
 ]
 
 
@@ -52,7 +59,7 @@ def obj_vertices(path):
 
 class SurfaceOfEachModel(unittest.TestCase):
     def test_each_model(self):
-        for name, options, q_floor, hausdorff_ceiling, angle_floor in CASES:
+        for name, options, q_floor, hausdorff_ceiling, angle_floor, below_30_ceiling in CASES:
             with self.subTest(model=name), tempfile.TemporaryDirectory() as out:
                 path = os.path.join(MODELS, name)
                 r = run("mesh", path, "-o", out, "--stop-after", "surface", "-q", *options)
@@ -85,7 +92,50 @@ class SurfaceOfEachModel(unittest.TestCase):
                     self.assertIn(key, quality["angles"])
                 self.assertGreaterEqual(quality["triangle_quality"]["min"], q_floor)
                 self.assertGreaterEqual(quality["angles"]["min_degrees"], angle_floor)
+                self.assertLessEqual(quality["angles"]["percent_below_30_degrees"], below_30_ceiling)
                 self.assertLessEqual(quality["hausdorff"]["percent_of_bounding_box_diagonal"], hausdorff_ceiling)
+
+
+class SkinnyTriangles(unittest.TestCase):
+    """--smooth splits surface triangles with an angle below 30 degrees; --min-triangle-angle 0
+    leaves them, and the default rules (sharp models) split none."""
+
+    def surface(self, out, *options):
+        r = run("mesh", os.path.join(MODELS, "sandia_bird.obj"), "-o", out, "--stop-after", "surface", "-q", *options)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            return json.load(f)
+
+    def test_split_only_where_asked(self):
+        with tempfile.TemporaryDirectory() as a, tempfile.TemporaryDirectory() as b:
+            kept = self.surface(a, "--smooth", "--min-triangle-angle", "0")
+            split = self.surface(b, "--smooth")
+        self.assertEqual(kept["options"]["min_triangle_angle_degrees"], 0)
+        self.assertEqual(split["options"]["min_triangle_angle_degrees"], 30)
+        self.assertEqual(kept["slivers"]["skinny_triangle_rounds"], 0)
+        self.assertEqual(kept["refinement"]["skinny_triangle_shrinks"], 0)
+        self.assertGreater(kept["surface"]["quality"]["angles"]["percent_below_30_degrees"], 0.2)
+
+        slivers = split["slivers"]
+        self.assertGreater(slivers["skinny_triangle_rounds"], 0)
+        self.assertLessEqual(slivers["skinny_triangle_rounds"], 10)
+        self.assertGreater(split["refinement"]["skinny_triangle_shrinks"], 0)
+        self.assertEqual(slivers["half_covered_left"], 0)
+        self.assertFalse(slivers["safe_mode"])
+        counts = [it["skinny_triangles"] for it in slivers["per_iteration"] if it["skinny_triangles"]]
+        self.assertLess(slivers["skinny_triangles_left"], counts[0])
+        quality = split["surface"]["quality"]
+        self.assertLessEqual(quality["angles"]["percent_below_30_degrees"], 0.1)
+        self.assertGreater(quality["triangle_quality"]["min"],
+                           kept["surface"]["quality"]["triangle_quality"]["min"])
+        self.assertTrue(quality["topology"]["matches"])
+
+    def test_the_bound_is_checked(self):
+        with tempfile.TemporaryDirectory() as out:
+            for bad in ("31", "-1"):
+                r = run("mesh", os.path.join(MODELS, "sandia_bird.obj"), "-o", out, "--min-triangle-angle", bad, "-q")
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertIn("--min-triangle-angle must lie between 0 and 30 degrees", r.stderr)
 
 
 if __name__ == "__main__":

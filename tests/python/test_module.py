@@ -217,6 +217,9 @@ class Module(unittest.TestCase):
         report = result.report()
         self.assertEqual(report["options"]["sharp_angle_degrees"], 60)
         self.assertEqual(report["options"]["smoothing_iterations"], 6)
+        self.assertEqual(report["options"]["min_triangle_angle_degrees"], 30)
+        self.assertEqual(vorocrust.DEFAULT_OPTIONS["min_triangle_angle"], 0)
+        self.assertEqual(vorocrust.DEFAULT_OPTIONS["smooth_min_triangle_angle"], 30)
         self.assertTrue(report["options"]["smooth"])
         self.assertEqual(report["features"]["corners"], 0)  # 397 by the default rules
         self.assertEqual(report["features"]["smoothing_iterations"], 6)
@@ -225,6 +228,15 @@ class Module(unittest.TestCase):
         # An explicit angle wins over the mode's.
         self.assertEqual(vorocrust.mesh(bimba, smooth=True, sharp_angle=45, stop_after="balls")
                          .report()["options"]["sharp_angle_degrees"], 45)
+        # Skinny triangles are split as the program splits them, and not when told so.
+        torus = os.path.join(MODELS, "sandia_torus.obj")
+        r = cli("mesh", torus, "-o", out, "--smooth", "--min-triangle-angle", "20", "--stop-after", "surface", "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        split = vorocrust.mesh(torus, smooth=True, min_triangle_angle=20, stop_after="surface")
+        self.assertEqual(split.report()["options"]["min_triangle_angle_degrees"], 20)
+        np.testing.assert_array_equal(split.seeds.positions, vorocrust.read_seeds(os.path.join(out, "seeds.csv")).positions)
+        with self.assertRaises(vorocrust.UsageError):
+            vorocrust.mesh(torus, smooth=True, min_triangle_angle=31, stop_after="surface")
         # Features are found after smoothing: with none, the folds of the coarse mesh are creases,
         # as by the default rules, and the refinement ends as it does with them.
         unsmoothed = vorocrust.mesh(bimba, smooth=True, smoothing_iterations=0, stop_after="balls").report()

@@ -47,7 +47,7 @@ TEST(SliverElimination, ShrinkingTheChosenBallsLeavesNoHalfCoveredPair) {
   flat_quad(balls, 0.08, 0.8);
   SeedPairs pairs = find_seed_pairs(balls);
   ASSERT_FALSE(pairs.half_covered.empty());
-  const SliverShrinks shrinks = choose_sliver_shrinks(balls, pairs.half_covered);
+  const BallShrinks shrinks = choose_sliver_shrinks(balls, pairs.half_covered);
   ASSERT_FALSE(shrinks.radii.empty());
   EXPECT_GT(shrinks.max_ratio, 0);
   EXPECT_LT(shrinks.max_ratio, 0.5);

@@ -38,6 +38,11 @@ void MeshOptions::check() const {
   if (threads < 0) throw Error(Error::Kind::Usage, "--threads must be 0 (all) or positive");
   if (smoothing_rounds() < 0) throw Error(Error::Kind::Usage, "--smoothing-iterations must be 0 or positive");
   if (cvt_iterations < 0) throw Error(Error::Kind::Usage, "--cvt-iterations must be 0 or positive");
+  if (!(min_triangle_angle() >= 0 && min_triangle_angle() <= kMaxMinTriangleAngleDegrees)) {
+    throw Error(Error::Kind::Usage, "--min-triangle-angle must lie between 0 and " +
+                                        std::to_string(static_cast<int>(kMaxMinTriangleAngleDegrees)) +
+                                        " degrees, got " + std::to_string(min_triangle_angle()));
+  }
 }
 
 const char* to_string(SelfIntersections mode) noexcept {
@@ -211,7 +216,9 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
 
   // Surface seeds and sliver elimination (paper 2.4).
   const SeedPairs pairs = clock("slivers", [&] {
-    return eliminate_slivers(refinement, SliverOptions{}, progress, result.slivers);
+    SliverOptions sliver_options;
+    sliver_options.min_triangle_angle_degrees = options.min_triangle_angle();
+    return eliminate_slivers(refinement, sliver_options, progress, result.slivers);
   });
   result.balls = refinement.balls();
   const RegionLocator regions(surface);

@@ -171,6 +171,8 @@ class BallRefinement::Impl {
   void run();
   const BallIndex& balls() const { return balls_; }
   void shrink_for_slivers(std::uint32_t ball, double radius) { shrink(ball, radius, Reason::Sliver); }
+  void shrink_for_skinny_triangle(std::uint32_t ball, double radius) { shrink(ball, radius, Reason::SkinnyTriangle); }
+  double deep_coverage() const { return deep_; }
   void relax_deep_coverage() { deep_ = 1 - kAlpha / 2; }
 
  private:
@@ -201,7 +203,7 @@ class BallRefinement::Impl {
   void defer_lost_lower_cover(Pool& pool);
 
   // --- shrinking ------------------------------------------------------------------------------
-  enum class Reason { C1, C3, Sliver };  // C1 also stands for C2
+  enum class Reason { C1, C3, Sliver, SkinnyTriangle };  // C1 also stands for C2
   void shrink(std::uint32_t ball, double radius, Reason why);
   void mark_dirty(const LostShell& shell, StratumType type);
   void build_element_trees();
@@ -286,7 +288,10 @@ void BallRefinement::Impl::shrink(std::uint32_t ball, double radius, Reason why)
   if (!(radius < b.radius)) return;
   const double old_radius = b.radius;
   balls_.shrink(ball, radius);
-  ++(why == Reason::C1 ? stats_.c1_shrinks : why == Reason::C3 ? stats_.c3_shrinks : stats_.sliver_shrinks);
+  ++(why == Reason::C1       ? stats_.c1_shrinks
+     : why == Reason::C3     ? stats_.c3_shrinks
+     : why == Reason::Sliver ? stats_.sliver_shrinks
+                             : stats_.skinny_triangle_shrinks);
   if (why != Reason::C3) unsettled_[static_cast<int>(b.site.type)].push_back(ball);
   lowest_shrunk_ = std::min(lowest_shrunk_, static_cast<int>(b.site.type));
   restart_phase_ = std::min(restart_phase_, static_cast<int>(b.site.type));
@@ -810,7 +815,13 @@ std::vector<Ball> BallRefinement::balls() const {
 
 void BallRefinement::shrink(std::uint32_t ball, double radius) { impl_->shrink_for_slivers(ball, radius); }
 
+void BallRefinement::shrink_for_skinny_triangle(std::uint32_t ball, double radius) {
+  impl_->shrink_for_skinny_triangle(ball, radius);
+}
+
 void BallRefinement::relax_deep_coverage() { impl_->relax_deep_coverage(); }
+
+double BallRefinement::deep_coverage() const { return impl_->deep_coverage(); }
 
 std::vector<Ball> refine_balls(const SurfaceMesh& mesh, const Strata& strata, const SizingField& sizing,
                                const RefinementOptions& options, const ProgressCallback& progress,

@@ -46,6 +46,10 @@ class BallRefinement {
   const BallIndex& index() const;
   // Only shrinks (a larger radius is ignored); the next run() restores C1-C4 around the ball.
   void shrink(std::uint32_t ball, double radius);
+  // The same, counted apart: to split a skinny surface triangle.
+  void shrink_for_skinny_triangle(std::uint32_t ball, double radius);
+  // How deep coverage must be, as a share of a radius: 1 - alpha, or 1 - alpha/2 in safe mode.
+  double deep_coverage() const;
   // Safe mode (paper 2.4): from now on alpha/2-deep coverage suffices, which bounds how often
   // shrinking for slivers can ask for new balls, so sliver elimination always ends.
   void relax_deep_coverage();

@@ -206,6 +206,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                 {"sharp_angle_degrees", o.sharp_angle()},
                 {"max_size", std::isfinite(o.max_size) ? json(o.max_size) : json(nullptr)},
                 {"smoothing_iterations", o.smoothing_rounds()},
+                {"min_triangle_angle_degrees", o.min_triangle_angle()},
                 {"sizing_file", o.sizing_file.string()},
                 {"stop_after", o.stop_after == Stage::Balls     ? "balls"
                                : o.stop_after == Stage::Surface ? "surface"
@@ -250,6 +251,7 @@ std::string run_report_json(const RunReport& report, int indent) {
         {"c1_shrinks", r.c1_shrinks},
         {"c3_shrinks", r.c3_shrinks},
         {"sliver_shrinks", r.sliver_shrinks},
+        {"skinny_triangle_shrinks", r.skinny_triangle_shrinks},
         {"rounds", r.rounds},
         {"boundary_samples", r.boundary_samples},
         {"converged", r.converged}};
@@ -266,11 +268,14 @@ std::string run_report_json(const RunReport& report, int indent) {
                         {"half_covered_percent", it.triplets ? 100.0 * it.half_covered / it.triplets : 0.0},
                         {"balls_shrunk", it.balls_shrunk},
                         {"max_shrinkage_ratio", it.max_shrinkage_ratio},
+                        {"skinny_triangles", it.skinny_triangles},
                         {"seconds", it.seconds}});
     }
     doc["slivers"] = {{"iterations", m.slivers.rounds()},
                       {"half_covered_left", m.slivers.iterations.back().half_covered},
                       {"safe_mode", m.slivers.safe_mode},
+                      {"skinny_triangle_rounds", m.slivers.skinny_triangle_rounds},
+                      {"skinny_triangles_left", m.slivers.iterations.back().skinny_triangles},
                       {"per_iteration", rounds}};
     std::size_t surface_seeds = 0;
     for (const Seed& seed : m.seeds) surface_seeds += seed.kind == SeedKind::Surface;

@@ -5,9 +5,9 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <string>
 
+#include "seeds/skinny_triangles.hpp"
 #include "seeds/sphere_triplet.hpp"
 #include "vorocrust/error.hpp"
 
@@ -61,8 +61,8 @@ void consider_quartet(const BallIndex& balls, const std::array<std::uint32_t, 4>
 
 }  // namespace
 
-SliverShrinks choose_sliver_shrinks(const BallIndex& balls, const std::vector<HalfCoveredPair>& half_covered) {
-  std::map<std::uint32_t, double> radius;  // ordered: the result is independent of hashing
+BallShrinks choose_sliver_shrinks(const BallIndex& balls, const std::vector<HalfCoveredPair>& half_covered) {
+  BallShrinkRequests requests;
   for (const HalfCoveredPair& h : half_covered) {
     std::vector<std::uint32_t> set(h.pair.balls.begin(), h.pair.balls.end());
     set.insert(set.end(), h.fourth.begin(), h.fourth.begin() + std::min(h.fourth.size(), kMaxCandidates - 3));
@@ -81,22 +81,18 @@ SliverShrinks choose_sliver_shrinks(const BallIndex& balls, const std::vector<Ha
         if (d < balls[s].radius) best.offer(s, balls[s], d);
       }
     }
-    if (!std::isfinite(best.ratio)) continue;
-    auto [it, fresh] = radius.emplace(best.ball, best.radius);
-    if (!fresh) it->second = std::min(it->second, best.radius);
+    if (std::isfinite(best.ratio)) requests.ask(best.ball, best.radius);
   }
-  SliverShrinks out;
-  for (const auto& [ball, r] : radius) {
-    out.radii.emplace_back(ball, r);
-    out.max_ratio = std::max(out.max_ratio, (balls[ball].radius - r) / balls[ball].radius);
-  }
-  return out;
+  return requests.result(balls);
 }
 
 SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& options, const ProgressCallback& progress,
                             SliverStats& stats) {
   using Clock = std::chrono::steady_clock;
-  for (int iteration = 0;; ++iteration) {
+  // Safe mode and the guard count rounds for slivers only: rounds for skinny triangles are
+  // bounded on their own.
+  int sliver_rounds = 0;
+  for (;;) {
     if (progress && !progress({"slivers", -1})) throw Error(Error::Kind::Cancelled, "cancelled during sliver elimination");
     const auto start = Clock::now();
     SeedPairs pairs = find_seed_pairs(refinement.index());
@@ -104,27 +100,42 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
     record.triplets = pairs.triplets;
     record.half_covered = pairs.half_covered.size();
     record.balls = refinement.index().size();
-    if (pairs.half_covered.empty()) {
+    const auto finish = [&](const BallShrinks& shrinks, bool skinny) {
+      record.balls_shrunk = shrinks.radii.size();
+      record.max_shrinkage_ratio = shrinks.max_ratio;
+      for (const auto& [ball, radius] : shrinks.radii) {
+        skinny ? refinement.shrink_for_skinny_triangle(ball, radius) : refinement.shrink(ball, radius);
+      }
+      refinement.run();
       record.seconds = std::chrono::duration<double>(Clock::now() - start).count();
       stats.iterations.push_back(record);
-      return pairs;
+    };
+    if (!pairs.half_covered.empty()) {
+      if (sliver_rounds >= options.max_iterations) {
+        throw Error(Error::Kind::Internal,
+                    "sliver elimination did not end after " + std::to_string(sliver_rounds) + " iterations (" +
+                        std::to_string(pairs.half_covered.size()) + " half-covered seed pairs left)");
+      }
+      if (sliver_rounds++ == options.iterations_before_safe_mode) {
+        stats.safe_mode = true;
+        refinement.relax_deep_coverage();
+      }
+      finish(choose_sliver_shrinks(refinement.index(), pairs.half_covered), false);
+      continue;
     }
-    if (iteration >= options.max_iterations) {
-      throw Error(Error::Kind::Internal,
-                  "sliver elimination did not end after " + std::to_string(iteration) + " iterations (" +
-                      std::to_string(pairs.half_covered.size()) + " half-covered seed pairs left)");
+    if (options.min_triangle_angle_degrees > 0) {
+      const SkinnyTriangleShrinks skinny = choose_skinny_triangle_shrinks(
+          refinement.index(), pairs.uncovered, options.min_triangle_angle_degrees, refinement.deep_coverage());
+      record.skinny_triangles = skinny.skinny;
+      if (stats.skinny_triangle_rounds < options.skinny_triangle_rounds && !skinny.shrinks.radii.empty()) {
+        ++stats.skinny_triangle_rounds;
+        finish(skinny.shrinks, true);
+        continue;
+      }
     }
-    if (iteration == options.iterations_before_safe_mode) {
-      stats.safe_mode = true;
-      refinement.relax_deep_coverage();
-    }
-    const SliverShrinks shrinks = choose_sliver_shrinks(refinement.index(), pairs.half_covered);
-    record.balls_shrunk = shrinks.radii.size();
-    record.max_shrinkage_ratio = shrinks.max_ratio;
-    for (const auto& [ball, radius] : shrinks.radii) refinement.shrink(ball, radius);
-    refinement.run();
     record.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     stats.iterations.push_back(record);
+    return pairs;
   }
 }
 

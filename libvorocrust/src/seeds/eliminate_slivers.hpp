@@ -1,8 +1,12 @@
 // Internal: sliver elimination (paper 2.4). Shrinks balls until no triplet of overlapping balls
 // has a half-covered seed pair, running the refinement again after each round so C1-C4 hold.
+// With an angle bound, rounds that shrink balls about skinny surface triangles
+// (seeds/skinny_triangles.hpp) follow once no pair is half-covered, each followed by sliver
+// elimination again.
 #pragma once
 
 #include "refinement/refine_balls.hpp"
+#include "seeds/ball_shrinks.hpp"
 #include "seeds/seed_pairs.hpp"
 #include "vorocrust/mesher.hpp"
 
@@ -11,6 +15,12 @@ namespace vorocrust {
 struct SliverOptions {
   int iterations_before_safe_mode = 100;  // paper 2.4
   int max_iterations = 400;               // a guard on the guard: safe mode converges long before
+  // Surface triangles of patch balls with an angle below this are split (0: none is).
+  double min_triangle_angle_degrees = 0;
+  // Rounds of that at most: each round can make a few skinny triangles of its own, so the
+  // rounds are bounded rather than run until none is left (igl_bunny --smooth: 400 skinny
+  // triangles, then 198, 134, 88, 58, 44, 19, 11, 6, 1).
+  int skinny_triangle_rounds = 10;
 };
 
 // Returns the seed pairs of the final balls, none of them half-covered.
@@ -18,12 +28,7 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
                             SliverStats& stats);
 
 // For each half-covered pair, the one shrink among its quartets that needs the least shrinkage
-// ratio; per ball the smallest radius so assigned. Returns (ball, radius) pairs by ball index
-// and the largest shrinkage ratio among them.
-struct SliverShrinks {
-  std::vector<std::pair<std::uint32_t, double>> radii;
-  double max_ratio = 0;
-};
-SliverShrinks choose_sliver_shrinks(const BallIndex& balls, const std::vector<HalfCoveredPair>& half_covered);
+// ratio; per ball the smallest radius so assigned.
+BallShrinks choose_sliver_shrinks(const BallIndex& balls, const std::vector<HalfCoveredPair>& half_covered);
 
 }  // namespace vorocrust

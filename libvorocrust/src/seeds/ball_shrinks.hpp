@@ -1,0 +1,42 @@
+// Internal: the balls the surface stage asks to shrink (paper 2.4), at most one radius per ball.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "refinement/ball_index.hpp"
+
+namespace vorocrust {
+
+// Per ball the smallest radius asked for, by ball index, and the largest shrinkage ratio
+// (r - r') / r among them (paper 2.4, "Shrinkage Ratio").
+struct BallShrinks {
+  std::vector<std::pair<std::uint32_t, double>> radii;
+  double max_ratio = 0;
+};
+
+// Gathers requests in any order; the result is ordered by ball index, so it does not depend on
+// the order requests came in.
+class BallShrinkRequests {
+ public:
+  void ask(std::uint32_t ball, double radius) {
+    auto [it, fresh] = radius_.emplace(ball, radius);
+    if (!fresh) it->second = std::min(it->second, radius);
+  }
+  BallShrinks result(const BallIndex& balls) const {
+    BallShrinks out;
+    for (const auto& [ball, r] : radius_) {
+      out.radii.emplace_back(ball, r);
+      out.max_ratio = std::max(out.max_ratio, (balls[ball].radius - r) / balls[ball].radius);
+    }
+    return out;
+  }
+
+ private:
+  std::map<std::uint32_t, double> radius_;
+};
+
+}  // namespace vorocrust

@@ -1,0 +1,91 @@
+// Skinny surface triangles and the shrinks that let the refinement split them (paper 2.4).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "refinement/ball_index.hpp"
+#include "seeds/skinny_triangles.hpp"
+
+namespace vorocrust {
+namespace {
+
+constexpr double kDeep = 1 - 0.13397459621556135;  // 1 - alpha
+
+SurfaceSite patch_site(const Point& p, StratumType type = StratumType::Patch) {
+  SurfaceSite s;
+  s.position = p;
+  s.type = type;
+  return s;
+}
+
+SeedPair triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) { return SeedPair{{a, b, c}, {}}; }
+
+// Two close balls (0.87 apart) facing a larger one in the plane z = 0: the angle at the far ball
+// is 32.3 degrees with the far ball 1.5 away, 25.8 with it 1.9 away.
+struct Fan {
+  BallIndex balls;
+  Point circumcentre;
+  explicit Fan(double far, StratumType far_type = StratumType::Patch) {
+    balls.add(patch_site(Point(0, -0.435, 0)), 1.0);
+    balls.add(patch_site(Point(0, 0.435, 0)), 1.0);
+    balls.add(patch_site(Point(far, 0, 0), far_type), 1.4 * far);
+    // On the x axis, as far from (far, 0) as from (0, 0.435).
+    circumcentre = Point((far * far - 0.435 * 0.435) / (2 * far), 0, 0);
+  }
+};
+
+TEST(SkinnyTriangles, AGoodTriangleAsksNothing) {
+  Fan fan(1.5);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  EXPECT_EQ(s.skinny, 0u);
+  EXPECT_TRUE(s.shrinks.radii.empty());
+}
+
+TEST(SkinnyTriangles, TheBallsCoveringTheCircumcentreDeeplyShrinkJustEnoughToUncoverIt) {
+  Fan fan(1.9);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  EXPECT_EQ(s.skinny, 1u);
+  // The circumcentre is 0.9998 from every corner: only the far ball (radius 2.66) covers it
+  // deeply; the close ones (radius 1) hold it, but not within 0.866.
+  ASSERT_EQ(s.shrinks.radii.size(), 1u);
+  const auto [ball, radius] = s.shrinks.radii[0];
+  EXPECT_EQ(ball, 2u);
+  const double d = (fan.balls[2].site.position - fan.circumcentre).norm();
+  EXPECT_NEAR(d, (fan.balls[0].site.position - fan.circumcentre).norm(), 1e-12);
+  EXPECT_LT(kDeep * radius, d);         // no longer covers it deeply
+  EXPECT_GT(kDeep * radius, 0.9 * d);   // by a small margin only
+  EXPECT_NEAR(s.shrinks.max_ratio, 1 - radius / fan.balls[2].radius, 1e-12);
+}
+
+TEST(SkinnyTriangles, AngleBoundDecidesWhichTrianglesAreSkinny) {
+  Fan fan(1.9);
+  EXPECT_EQ(choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 25, kDeep).skinny, 0u);
+  EXPECT_EQ(choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 0, kDeep).skinny, 0u);
+}
+
+TEST(SkinnyTriangles, TrianglesAtFeaturesAreLeftToTheProtectingBalls) {
+  Fan fan(1.9, StratumType::Crease);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  EXPECT_EQ(s.skinny, 0u);
+  EXPECT_TRUE(s.shrinks.radii.empty());
+}
+
+TEST(SkinnyTriangles, OneBallAskedTwiceTakesTheSmallerRadius) {
+  Fan fan(1.9);
+  // The same triangle twice, and another skinny one (22.6 degrees at the far ball) whose
+  // circumcentre lies 0.52 from the far ball, against 1.0 for the first.
+  fan.balls.add(patch_site(Point(2.9, -0.2, 0)), 1.0);
+  fan.balls.add(patch_site(Point(2.9, 0.2, 0)), 1.0);
+  const auto one = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  const auto both = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2), triangle(0, 1, 2), triangle(2, 3, 4)},
+                                                   30, kDeep);
+  EXPECT_EQ(both.skinny, 3u);
+  double far_one = 0, far_both = 0;
+  for (const auto& [b, r] : one.shrinks.radii) if (b == 2) far_one = r;
+  for (const auto& [b, r] : both.shrinks.radii) if (b == 2) far_both = r;
+  EXPECT_GT(far_one, 0);
+  EXPECT_LT(far_both, far_one);
+}
+
+}  // namespace
+}  // namespace vorocrust
