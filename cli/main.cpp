@@ -58,7 +58,8 @@ int main(int argc, char** argv) {
                      "The input approximates a smooth surface (a scan, a coarse tessellation of a curved shape): "
                      "it is smoothed as one patch (boundary and non-manifold edges stay) and its features are found "
                      "on the result, so the folds of its tessellation are not creases; the sharp angle defaults to "
-                     "60 and the smoothing to 6 rounds, the paper's settings for smooth models");
+                     "60, the smoothing to 6 rounds (the paper's settings for smooth models) and the smallest "
+                     "triangle angle to 30");
   mesh_cmd->add_option_function<double>(
       "--sharp-angle", [&](double degrees) { mesh.options.sharp_angle_degrees = degrees; },
       "Normal deviation in degrees (0,90) above which an edge is a sharp crease, and the most normals may turn "

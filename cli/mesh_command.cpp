@@ -126,11 +126,13 @@ int run_mesh(const MeshArgs& args) {
       std::fprintf(stderr, "vorocrust: %zu balls (%zu corner, %zu crease, %zu patch) in %s\n",
                    r.balls[0] + r.balls[1] + r.balls[2], r.balls[0], r.balls[1], r.balls[2], args.output_dir.c_str());
       if (surface) {
+        const std::size_t splits = result->slivers.rounds_for(SliverIteration::Shrunk::ForSkinnyTriangles);
         std::fprintf(stderr, "vorocrust: %zu surface seeds, a surface of %zu triangles after %zu rounds of sliver "
-                     "elimination\n", static_cast<std::size_t>(std::count_if(result->seeds.begin(), result->seeds.end(),
+                     "elimination%s\n", static_cast<std::size_t>(std::count_if(result->seeds.begin(), result->seeds.end(),
                                                   [](const Seed& s) { return s.kind == SeedKind::Surface; })),
                      result->surface.num_faces(),
-                     result->slivers.rounds());
+                     result->slivers.rounds_for(SliverIteration::Shrunk::ForSlivers),
+                     splits > 0 ? (" and " + std::to_string(splits) + " splitting skinny triangles").c_str() : "");
         const SurfaceQuality& q = *result->surface_quality;
         std::fprintf(stderr, "vorocrust: smallest angle %.1f deg, %.2f %% of angles below 30 deg, Q min %.3f, "
                      "Hausdorff %.3f %% of the diagonal, topology %s\n", q.min_angle_degrees,

@@ -118,8 +118,8 @@ class VoronoiMeshPanel:
         self.smooth.setChecked(p.GetBool("Smooth", defaults.smooth))
         self.smooth.setToolTip("The input approximates a smooth surface (a scan, a coarse tessellation of a curved "
                                "shape): it is smoothed by Loop subdivision as one patch and its creases are found on "
-                               "the result, so the folds of its tessellation are none; surface triangles with an "
-                               "angle below 30 degrees are split")
+                               "the result, so the folds of its tessellation are none; most surface triangles away "
+                               "from creases with an angle below 30 degrees are split")
         self.smooth.toggled.connect(self._smooth_toggled)
         self.max_size = spin(p.GetFloat("MaxSize", 0.0), 0, 1e9, 1, 4, "Largest ball radius and cell size")
         self.max_size.setSpecialValueText("no bound")

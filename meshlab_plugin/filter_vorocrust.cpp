@@ -76,7 +76,7 @@ void add_refinement_parameters(const MeshModel* m, RichParameterList& parameters
                                "The mesh approximates a smooth surface (a scan, a coarse tessellation of a curved "
                                "shape): it is smoothed by Loop subdivision as one patch (open and non-manifold edges "
                                "stay) and its creases are found on the result, so the folds of its tessellation "
-                               "are none; surface triangles with an angle below 30 degrees are split. "
+                               "are none; most surface triangles away from creases with an angle below 30 degrees are split. "
                                "Use a sharp angle of 60 with it, as the VoroCrust paper does for smooth models."));
   parameters.addParam(RichFloat(kSharpAngle, float(defaults.sharp_angle()), "Sharp angle (degrees)",
                                 "An edge whose two faces' normals differ by more than this angle is a sharp crease, "

@@ -185,7 +185,10 @@ class Mesh(unittest.TestCase):
             slivers = report["slivers"]
             self.assertEqual(slivers["iterations"] + 1, len(slivers["per_iteration"]))
             self.assertEqual(slivers["per_iteration"][-1]["half_covered"], 0)
+            self.assertEqual(slivers["sliver_rounds"], slivers["iterations"])  # nothing split by default
+            self.assertEqual(slivers["per_iteration"][-1]["shrunk_for"], "nothing")
             for it in slivers["per_iteration"][:-1]:
+                self.assertEqual(it["shrunk_for"], "slivers")
                 self.assertGreater(it["half_covered"], 0)
                 self.assertGreater(it["max_shrinkage_ratio"], 0)
             with open(os.path.join(out, "seeds.csv")) as f:

@@ -229,14 +229,17 @@ class Module(unittest.TestCase):
         self.assertEqual(vorocrust.mesh(bimba, smooth=True, sharp_angle=45, stop_after="balls")
                          .report()["options"]["sharp_angle_degrees"], 45)
         # Skinny triangles are split as the program splits them, and not when told so.
-        torus = os.path.join(MODELS, "sandia_torus.obj")
-        r = cli("mesh", torus, "-o", out, "--smooth", "--min-triangle-angle", "20", "--stop-after", "surface", "-q")
+        bird = os.path.join(MODELS, "sandia_bird.obj")
+        r = cli("mesh", bird, "-o", out, "--smooth", "--stop-after", "surface", "-q")
         self.assertEqual(r.returncode, 0, r.stderr)
-        split = vorocrust.mesh(torus, smooth=True, min_triangle_angle=20, stop_after="surface")
-        self.assertEqual(split.report()["options"]["min_triangle_angle_degrees"], 20)
+        split = vorocrust.mesh(bird, smooth=True, stop_after="surface")
+        self.assertGreater(split.report()["slivers"]["skinny_triangle_rounds"], 0)
         np.testing.assert_array_equal(split.seeds.positions, vorocrust.read_seeds(os.path.join(out, "seeds.csv")).positions)
+        kept = vorocrust.mesh(bird, smooth=True, min_triangle_angle=0, stop_after="surface").report()
+        self.assertEqual(kept["options"]["min_triangle_angle_degrees"], 0)
+        self.assertEqual(kept["slivers"]["skinny_triangle_rounds"], 0)
         with self.assertRaises(vorocrust.UsageError):
-            vorocrust.mesh(torus, smooth=True, min_triangle_angle=31, stop_after="surface")
+            vorocrust.mesh(bird, smooth=True, min_triangle_angle=31, stop_after="surface")
         # Features are found after smoothing: with none, the folds of the coarse mesh are creases,
         # as by the default rules, and the refinement ends as it does with them.
         unsmoothed = vorocrust.mesh(bimba, smooth=True, smoothing_iterations=0, stop_after="balls").report()

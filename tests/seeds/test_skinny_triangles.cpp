@@ -11,7 +11,7 @@ namespace {
 
 constexpr double kDeep = 1 - 0.13397459621556135;  // 1 - alpha
 
-SurfaceSite patch_site(const Point& p, StratumType type = StratumType::Patch) {
+SurfaceSite site(const Point& p, StratumType type = StratumType::Patch) {
   SurfaceSite s;
   s.position = p;
   s.type = type;
@@ -26,9 +26,9 @@ struct Fan {
   BallIndex balls;
   Point circumcentre;
   explicit Fan(double far, StratumType far_type = StratumType::Patch) {
-    balls.add(patch_site(Point(0, -0.435, 0)), 1.0);
-    balls.add(patch_site(Point(0, 0.435, 0)), 1.0);
-    balls.add(patch_site(Point(far, 0, 0), far_type), 1.4 * far);
+    balls.add(site(Point(0, -0.435, 0)), 1.0);
+    balls.add(site(Point(0, 0.435, 0)), 1.0);
+    balls.add(site(Point(far, 0, 0), far_type), 1.4 * far);
     // On the x axis, as far from (far, 0) as from (0, 0.435).
     circumcentre = Point((far * far - 0.435 * 0.435) / (2 * far), 0, 0);
   }
@@ -70,14 +70,35 @@ TEST(SkinnyTriangles, TrianglesAtFeaturesAreLeftToTheProtectingBalls) {
   EXPECT_TRUE(s.shrinks.radii.empty());
 }
 
+TEST(SkinnyTriangles, ACircumcentreInAProtectingBallAsksNothing) {
+  // Patch samples cannot land inside a crease ball, whatever the patch balls' radii.
+  Fan fan(1.9);
+  fan.balls.add(site(fan.circumcentre + Point(0, 0, 0.05), StratumType::Crease), 0.1);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  EXPECT_EQ(s.skinny, 1u);
+  EXPECT_TRUE(s.shrinks.radii.empty());
+}
+
+TEST(SkinnyTriangles, OnlyBallsOfTheTrianglesPatchesShrink) {
+  // A ball of another patch (across a thin wall) covering the circumcentre deeply stays.
+  Fan fan(1.9);
+  SurfaceSite other = site(fan.circumcentre + Point(0, 0, 0.2));
+  other.stratum = 1;
+  fan.balls.add(other, 1.0);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  ASSERT_EQ(s.shrinks.radii.size(), 1u);
+  EXPECT_EQ(s.shrinks.radii[0].first, 2u);
+}
+
 TEST(SkinnyTriangles, OneBallAskedTwiceTakesTheSmallerRadius) {
   Fan fan(1.9);
   // The same triangle twice, and another skinny one (22.6 degrees at the far ball) whose
   // circumcentre lies 0.52 from the far ball, against 1.0 for the first.
-  fan.balls.add(patch_site(Point(2.9, -0.2, 0)), 1.0);
-  fan.balls.add(patch_site(Point(2.9, 0.2, 0)), 1.0);
+  fan.balls.add(site(Point(2.9, -0.2, 0)), 1.0);
+  fan.balls.add(site(Point(2.9, 0.2, 0)), 1.0);
   const auto one = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
-  const auto both = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2), triangle(0, 1, 2), triangle(2, 3, 4)},
+  // The smaller request first: the larger one after it must not replace it.
+  const auto both = choose_skinny_triangle_shrinks(fan.balls, {triangle(2, 3, 4), triangle(0, 1, 2), triangle(0, 1, 2)},
                                                    30, kDeep);
   EXPECT_EQ(both.skinny, 3u);
   double far_one = 0, far_both = 0;

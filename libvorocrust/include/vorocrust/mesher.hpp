@@ -5,6 +5,7 @@
 // Runs are reproducible: equal input, options and seed give equal output.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -134,8 +135,11 @@ struct RefinementStats {
 };
 
 // One round of sliver elimination (paper 2.4, Figure 9): the triplets of overlapping balls as
-// found, how many had a half-covered seed pair, and the shrinking that followed.
+// found, how many had a half-covered seed pair, and the shrinking that followed: for the
+// slivers, or, once no pair was half-covered, to split skinny surface triangles.
 struct SliverIteration {
+  enum class Shrunk { Nothing, ForSlivers, ForSkinnyTriangles };
+  Shrunk shrunk = Shrunk::Nothing;  // Nothing: the last iteration
   std::size_t balls = 0;
   std::size_t triplets = 0;      // triplets whose spheres meet in two points
   std::size_t half_covered = 0;  // of them, with exactly one point inside a fourth ball
@@ -149,10 +153,14 @@ struct SliverIteration {
 
 struct SliverStats {
   std::vector<SliverIteration> iterations;  // the last one found no half-covered pair
-  bool safe_mode = false;  // alpha/2-deep coverage accepted after 100 iterations
-  int skinny_triangle_rounds = 0;  // iterations that shrank balls about skinny triangles
+  // alpha/2-deep coverage accepted after 100 sliver rounds in a row (no split between them)
+  bool safe_mode = false;
   // Rounds of shrinking: every iteration but the last, which found nothing to shrink.
   std::size_t rounds() const { return iterations.empty() ? 0 : iterations.size() - 1; }
+  std::size_t rounds_for(SliverIteration::Shrunk why) const {
+    return static_cast<std::size_t>(
+        std::count_if(iterations.begin(), iterations.end(), [&](const SliverIteration& it) { return it.shrunk == why; }));
+  }
 };
 
 // How the interior was seeded (paper A.5).

@@ -813,7 +813,7 @@ std::vector<Ball> BallRefinement::balls() const {
   return out;
 }
 
-void BallRefinement::shrink(std::uint32_t ball, double radius) { impl_->shrink_for_slivers(ball, radius); }
+void BallRefinement::shrink_for_slivers(std::uint32_t ball, double radius) { impl_->shrink_for_slivers(ball, radius); }
 
 void BallRefinement::shrink_for_skinny_triangle(std::uint32_t ball, double radius) {
   impl_->shrink_for_skinny_triangle(ball, radius);

@@ -45,7 +45,7 @@ class BallRefinement {
   std::vector<Ball> balls() const;
   const BallIndex& index() const;
   // Only shrinks (a larger radius is ignored); the next run() restores C1-C4 around the ball.
-  void shrink(std::uint32_t ball, double radius);
+  void shrink_for_slivers(std::uint32_t ball, double radius);
   // The same, counted apart: to split a skinny surface triangle.
   void shrink_for_skinny_triangle(std::uint32_t ball, double radius);
   // How deep coverage must be, as a share of a radius: 1 - alpha, or 1 - alpha/2 in safe mode.

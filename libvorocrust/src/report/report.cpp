@@ -262,7 +262,10 @@ std::string run_report_json(const RunReport& report, int indent) {
     // largest shrinkage ratio applied to remove them.
     json rounds = json::array();
     for (const SliverIteration& it : m.slivers.iterations) {
-      rounds.push_back({{"balls", it.balls},
+      rounds.push_back({{"shrunk_for", it.shrunk == SliverIteration::Shrunk::ForSlivers           ? "slivers"
+                                       : it.shrunk == SliverIteration::Shrunk::ForSkinnyTriangles ? "skinny_triangles"
+                                                                                                  : "nothing"},
+                        {"balls", it.balls},
                         {"triplets", it.triplets},
                         {"half_covered", it.half_covered},
                         {"half_covered_percent", it.triplets ? 100.0 * it.half_covered / it.triplets : 0.0},
@@ -274,7 +277,8 @@ std::string run_report_json(const RunReport& report, int indent) {
     doc["slivers"] = {{"iterations", m.slivers.rounds()},
                       {"half_covered_left", m.slivers.iterations.back().half_covered},
                       {"safe_mode", m.slivers.safe_mode},
-                      {"skinny_triangle_rounds", m.slivers.skinny_triangle_rounds},
+                      {"sliver_rounds", m.slivers.rounds_for(SliverIteration::Shrunk::ForSlivers)},
+                      {"skinny_triangle_rounds", m.slivers.rounds_for(SliverIteration::Shrunk::ForSkinnyTriangles)},
                       {"skinny_triangles_left", m.slivers.iterations.back().skinny_triangles},
                       {"per_iteration", rounds}};
     std::size_t surface_seeds = 0;

@@ -15,12 +15,6 @@ namespace vorocrust {
 
 namespace {
 
-// A ball shrinks to 5 % inside the distance to the point it must give up. Shrinking to the
-// distance itself leaves the point on four spheres, a degenerate seed, and a sliver's quartet is
-// nearly degenerate anyway: the balls whose radii C3 ties to the shrunk one shrink with it, which
-// moves the triplet's points by as much as the shrink. With a clearance of 1e-6 the same quartets
-// came back for 60-100 rounds (cgal_joint 99, igl_bunny 59); with 5 % they resolve in 5-6.
-constexpr double kClearance = 0.05;
 // Quartets per half-covered pair are all 4-subsets of the triplet and the balls covering its
 // points; a handful of covering balls is the rule, so this cap only bounds pathological cases.
 constexpr std::size_t kMaxCandidates = 10;
@@ -35,7 +29,7 @@ struct Candidate {
   // Ratio"); on a tie the lower ball index wins, so the choice is independent of order.
   void offer(std::uint32_t candidate, const RefinedBall& q, double d) {
     const double r = (q.radius - d) / q.radius;
-    if (r < ratio || (r == ratio && candidate < ball)) *this = {candidate, d * (1 - kClearance), r};
+    if (r < ratio || (r == ratio && candidate < ball)) *this = {candidate, d * (1 - kShrinkClearance), r};
   }
 };
 
@@ -89,9 +83,9 @@ BallShrinks choose_sliver_shrinks(const BallIndex& balls, const std::vector<Half
 SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& options, const ProgressCallback& progress,
                             SliverStats& stats) {
   using Clock = std::chrono::steady_clock;
-  // Safe mode and the guard count rounds for slivers only: rounds for skinny triangles are
-  // bounded on their own.
-  int sliver_rounds = 0;
+  // The guard counts every sliver round; safe mode those since the last split (each split can
+  // ask for a few rounds of its own, and igl_bunny takes 53 in all).
+  int sliver_rounds = 0, sliver_rounds_in_a_row = 0;
   for (;;) {
     if (progress && !progress({"slivers", -1})) throw Error(Error::Kind::Cancelled, "cancelled during sliver elimination");
     const auto start = Clock::now();
@@ -100,11 +94,16 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
     record.triplets = pairs.triplets;
     record.half_covered = pairs.half_covered.size();
     record.balls = refinement.index().size();
-    const auto finish = [&](const BallShrinks& shrinks, bool skinny) {
+    const auto finish = [&](const BallShrinks& shrinks, SliverIteration::Shrunk why) {
+      record.shrunk = why;
       record.balls_shrunk = shrinks.radii.size();
       record.max_shrinkage_ratio = shrinks.max_ratio;
       for (const auto& [ball, radius] : shrinks.radii) {
-        skinny ? refinement.shrink_for_skinny_triangle(ball, radius) : refinement.shrink(ball, radius);
+        if (why == SliverIteration::Shrunk::ForSlivers) {
+          refinement.shrink_for_slivers(ball, radius);
+        } else {
+          refinement.shrink_for_skinny_triangle(ball, radius);
+        }
       }
       refinement.run();
       record.seconds = std::chrono::duration<double>(Clock::now() - start).count();
@@ -116,20 +115,22 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
                     "sliver elimination did not end after " + std::to_string(sliver_rounds) + " iterations (" +
                         std::to_string(pairs.half_covered.size()) + " half-covered seed pairs left)");
       }
-      if (sliver_rounds++ == options.iterations_before_safe_mode) {
+      ++sliver_rounds;
+      if (sliver_rounds_in_a_row++ == options.iterations_before_safe_mode && !stats.safe_mode) {
         stats.safe_mode = true;
         refinement.relax_deep_coverage();
       }
-      finish(choose_sliver_shrinks(refinement.index(), pairs.half_covered), false);
+      finish(choose_sliver_shrinks(refinement.index(), pairs.half_covered), SliverIteration::Shrunk::ForSlivers);
       continue;
     }
     if (options.min_triangle_angle_degrees > 0) {
       const SkinnyTriangleShrinks skinny = choose_skinny_triangle_shrinks(
           refinement.index(), pairs.uncovered, options.min_triangle_angle_degrees, refinement.deep_coverage());
       record.skinny_triangles = skinny.skinny;
-      if (stats.skinny_triangle_rounds < options.skinny_triangle_rounds && !skinny.shrinks.radii.empty()) {
-        ++stats.skinny_triangle_rounds;
-        finish(skinny.shrinks, true);
+      const auto splits = stats.rounds_for(SliverIteration::Shrunk::ForSkinnyTriangles);
+      if (splits < static_cast<std::size_t>(options.max_skinny_triangle_rounds) && !skinny.shrinks.radii.empty()) {
+        sliver_rounds_in_a_row = 0;
+        finish(skinny.shrinks, SliverIteration::Shrunk::ForSkinnyTriangles);
         continue;
       }
     }

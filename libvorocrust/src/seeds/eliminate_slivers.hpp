@@ -19,8 +19,9 @@ struct SliverOptions {
   double min_triangle_angle_degrees = 0;
   // Rounds of that at most: each round can make a few skinny triangles of its own, so the
   // rounds are bounded rather than run until none is left (igl_bunny --smooth: 400 skinny
-  // triangles, then 198, 134, 88, 58, 44, 19, 11, 6, 1).
-  int skinny_triangle_rounds = 10;
+  // triangles, then 198, 134, 88, 58, 44, 19, 11, 6, 1). Safe mode counts the sliver rounds
+  // since the last of them; the guard counts all sliver rounds.
+  int max_skinny_triangle_rounds = 10;
 };
 
 // Returns the seed pairs of the final balls, none of them half-covered.

@@ -9,10 +9,6 @@ namespace vorocrust {
 
 namespace {
 
-// As sliver elimination's: a ball shrunk to the distance itself would leave the circumcentre on
-// its sphere, where the next sample may not land.
-constexpr double kClearance = 0.05;
-
 // The circumcentre of a non-degenerate triangle, in its plane.
 Point circumcentre(const Point& a, const Point& b, const Point& c) {
   const Point ab = b - a, ac = c - a;
@@ -35,11 +31,20 @@ SkinnyTriangleShrinks choose_skinny_triangle_shrinks(const BallIndex& balls, con
     ++out.skinny;
     if (!(shape.quality > 0)) continue;  // no circumcentre; overlapping balls never make one
     const Point x = circumcentre(a.site.position, b.site.position, c.site.position);
+    // Inside a crease or corner ball a point counts as covered for patches: no patch ball
+    // shrunk would let a sample land there.
     near.clear();
-    balls.reaching(StratumType::Patch, x, 0.0, near);
+    balls.reaching(StratumType::Corner, x, 0.0, near);
+    balls.reaching(StratumType::Crease, x, 0.0, near);
+    if (!near.empty()) continue;
+    balls.reaching_scaled(StratumType::Patch, x, deep_coverage, 0.0, near);
     for (std::uint32_t q : near) {
+      // A circumcentre far off (an obtuse triangle) can lie in a ball of another patch, across
+      // a thin wall; that ball has nothing to do with the triangle.
+      const Index patch = balls[q].site.stratum;
+      if (patch != a.site.stratum && patch != b.site.stratum && patch != c.site.stratum) continue;
       const double d = (balls[q].site.position - x).norm();
-      if (d < deep_coverage * balls[q].radius) requests.ask(q, d / deep_coverage * (1 - kClearance));
+      requests.ask(q, d / deep_coverage * (1 - kShrinkClearance));
     }
   }
   out.shrinks = requests.result(balls);

@@ -25,12 +25,15 @@ namespace vorocrust {
 
 struct SkinnyTriangleShrinks {
   std::size_t skinny = 0;  // triangles of three patch balls with an angle below the bound
-  BallShrinks shrinks;     // patch balls covering their circumcentres deeply, each to just less
+  // Patch balls covering their circumcentres deeply, each to just less.
+  BallShrinks shrinks;
 };
 
 // The triangles of `pairs` (their balls' centres) with an angle below `min_angle_degrees`, and
-// the shrinks that uncover their circumcentres: each ball to (1 - 5 %) of the radius within
-// which it would cover the circumcentre `deep_coverage` deep.
+// the shrinks that uncover their circumcentres: each patch ball of the triangle's patches to
+// (1 - 5 %) of the radius within which it would cover the circumcentre `deep_coverage` deep.
+// A circumcentre inside a crease or corner ball asks nothing: the protecting ball keeps patch
+// samples out there whatever the patch balls do.
 SkinnyTriangleShrinks choose_skinny_triangle_shrinks(const BallIndex& balls, const std::vector<SeedPair>& pairs,
                                                      double min_angle_degrees, double deep_coverage);
 
