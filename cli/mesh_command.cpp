@@ -132,7 +132,7 @@ int run_mesh(const MeshArgs& args) {
                                                   [](const Seed& s) { return s.kind == SeedKind::Surface; })),
                      result->surface.num_faces(),
                      result->slivers.rounds_for(SliverIteration::Shrunk::ForSlivers),
-                     splits > 0 ? (" and " + std::to_string(splits) + " splitting skinny triangles").c_str() : "");
+                     splits > 0 ? (" and " + std::to_string(splits) + " of splitting skinny triangles").c_str() : "");
         const SurfaceQuality& q = *result->surface_quality;
         std::fprintf(stderr, "vorocrust: smallest angle %.1f deg, %.2f %% of angles below 30 deg, Q min %.3f, "
                      "Hausdorff %.3f %% of the diagonal, topology %s\n", q.min_angle_degrees,

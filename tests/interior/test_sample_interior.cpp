@@ -153,7 +153,8 @@ TEST(SampleInterior, LatticeGivesCubesInTheDeepInterior) {
   // A lattice seed whose six lattice neighbours are seeds too, and no seed of the random layer
   // near the surface close enough to cut a corner, has a cube for its cell. The joint is thin,
   // and the poles on the balls' spheres (cap seeds) make a second layer under the surface: about
-  // one lattice seed in seventeen is that deep.
+  // one lattice seed in twenty-five is that deep (fewer poles leave room for more lattice seeds
+  // near the surface, none of them a cube: 29 cubes of 552 lattice seeds, then 27 of 686).
   std::size_t cubes = 0;
   for (const VoronoiCell& c : r.cells.cells) {
     if (c.faces.size() != 6) continue;
@@ -165,7 +166,7 @@ TEST(SampleInterior, LatticeGivesCubesInTheDeepInterior) {
     }
     cubes += hi < lo * (1 + 1e-6);
   }
-  EXPECT_GT(cubes, r.interior.lattice_seeds / 20);
+  EXPECT_GT(cubes, r.interior.lattice_seeds / 30);
 }
 
 TEST(SampleInterior, CvtMovesInteriorSeedsTowardTheirCentroidsAndKeepsTheSurface) {

@@ -17,7 +17,10 @@ namespace vorocrust {
 namespace {
 
 constexpr StratumType kTypes[] = {StratumType::Corner, StratumType::Crease, StratumType::Patch};
-// Two seeds placed on spheres stay this fraction of the ball's radius apart.
+// Two seeds placed on spheres stay this fraction of the ball's radius apart. Wider would suit
+// poles (below) but not repair seeds: at 0.35 or 0.5 the skew repair found no room for seeds it
+// needed (cgal_bones: 17 highly skew faces instead of 9; igl_fertility: a highly skew face and a
+// cell of aspect ratio 18.5).
 constexpr double kSpacing = 0.1;
 // A seed placed on one sphere stays this far outside every other ball, in radii, unless it lies
 // on that ball's sphere too: just outside a sphere, it would move the Voronoi vertex at the
@@ -29,6 +32,15 @@ constexpr std::uint32_t kNoBall = static_cast<std::uint32_t>(-1);
 constexpr double kNearCentre = 0.5;
 constexpr double kCloseSpacing = 0.01;
 constexpr double kPoleOffSeed = 1e-3;  // a pole nearer a seed than this, in radii, would be its twin
+// A pole's cell is a cone from its ball's centre, as wide as the seeds of its material around the
+// pole leave it: with one of them nearer than this, in radii, it is a spindle (igl_bunny
+// --smooth: aspect ratios 5 to 6, its worst cells). Such a pole is not placed; the seeds about it
+// already lie near the middle of the cap, and the skew repair adds a seed on the sphere where a
+// face through the centre is then highly skew.
+constexpr double kPoleClearance = 0.4;
+// Poles stay this fraction of their radii apart: 0.1 apart, two poles of neighbouring balls make
+// two thin cells (igl_bunny --smooth: aspect ratio 6.08).
+constexpr double kPoleSpacing = 0.35;
 // A material's seeds must agree on a direction this well (the length of their mean unit
 // vector) for a pole: seeds spread all round the sphere (a sheet with one material on both
 // sides) have no middle.
@@ -183,19 +195,25 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
   const SeedCloud cloud{&surface_seeds};
   const StaticKdTree<SeedCloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   std::vector<std::uint32_t> near;
-  const auto on_a_seed = [&](std::uint32_t b, const Point& u) {
+  // Whether a seed of the cap's material lies within kPoleClearance of the pole at direction u,
+  // or any seed within kPoleOffSeed.
+  const auto crowded = [&](std::uint32_t b, const Point& u, std::int32_t region) {
     const Point p = balls[b].site.position + balls[b].radius * u;
-    const double tolerance = kPoleOffSeed * balls[b].radius;
-    points_within(tree, p, tolerance * tolerance, near);
-    return !near.empty();
+    const double clearance = kPoleClearance * balls[b].radius, twin = kPoleOffSeed * balls[b].radius;
+    points_within(tree, p, clearance * clearance, near);
+    return std::any_of(near.begin(), near.end(), [&](std::uint32_t k) {
+      return surface_seeds[k].region == region || (surface_seeds[k].position - p).squaredNorm() < twin * twin;
+    });
   };
   SphereSeeds place(balls, regions);
   std::vector<Seed> poles;
   for (std::uint32_t b = 0; b < balls.size(); ++b) {
     for (const Cap& cap : caps[b]) {
       const double length = cap.sum.norm();
-      if (!(length > kMinimumMean * cap.count) || on_a_seed(b, cap.sum / length)) continue;
-      if (const std::optional<Seed> pole = place.place(b, cap.sum / length, cap.region)) poles.push_back(*pole);
+      if (!(length > kMinimumMean * cap.count) || crowded(b, cap.sum / length, cap.region)) continue;
+      if (const std::optional<Seed> pole = place.place(b, cap.sum / length, cap.region, kPoleSpacing / kSpacing)) {
+        poles.push_back(*pole);
+      }
     }
   }
   return poles;

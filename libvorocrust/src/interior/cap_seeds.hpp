@@ -13,7 +13,8 @@
 // seeds out of a clearance around every ball for that reason.
 //
 // - pole_seeds: one pole per ball and material on its sphere, in the mean direction of that
-//   material's seeds there, unless that lands on a surface seed;
+//   material's seeds there, unless that lands on a surface seed, near one of that material (its
+//   cell would be a spindle from the centre), or near another pole;
 // - skew_repair_seeds: where a face of the cells is still highly skew, between two cells of one
 //   material: if it is a wedge through the centre of a sphere both seeds lie on, a seed on that
 //   sphere toward the face, or else at its free point farthest from the material's seeds there;

@@ -1,0 +1,92 @@
+// Poles: seeds on the protecting spheres in the middle of each material's seeds there (2.5).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "interior/cap_seeds.hpp"
+#include "refinement/ball_index.hpp"
+#include "seeds/locate_regions.hpp"
+#include "surface_builder.hpp"
+
+namespace vorocrust {
+namespace {
+
+constexpr double kRadius = 0.2;
+
+// Balls centred on the top of the cube [-1, 1]^3, the inside below them, and the inner seeds
+// each ball's cap holds.
+struct TopOfCube {
+  SurfaceMesh surface;
+  BallIndex balls;
+  std::vector<Seed> seeds;
+
+  TopOfCube() {
+    test::SurfaceBuilder b;
+    b.box(Point(-1, -1, -1), Point(1, 1, 1));
+    surface = std::move(b.mesh);
+  }
+  std::uint32_t ball(double x) {
+    SurfaceSite site;
+    site.position = Point(x, 0, 1);
+    site.direction = Point(0, 0, 1);
+    return balls.add(site, kRadius);
+  }
+  // A seed of `region` on ball b's sphere, `polar` degrees from straight down, at `azimuth`.
+  void seed(std::uint32_t b, double polar, double azimuth, std::int32_t region = kInsideRegion) {
+    const double t = polar * std::numbers::pi / 180, f = azimuth * std::numbers::pi / 180;
+    const Point u(std::sin(t) * std::cos(f), std::sin(t) * std::sin(f), -std::cos(t));
+    seeds.push_back(Seed{balls[b].site.position + kRadius * u, region, kRadius, SeedKind::Surface});
+  }
+  // Eight inner seeds 70 degrees from straight down: their middle is 1.15 radii from each.
+  void ring(std::uint32_t b) {
+    for (int k = 0; k < 8; ++k) seed(b, 70, 45 * k);
+  }
+  std::vector<Seed> poles() const { return pole_seeds(seeds, balls, RegionLocator(surface)); }
+};
+
+TEST(PoleSeeds, APoleSitsInTheMiddleOfARingOfSeeds) {
+  TopOfCube cube;
+  cube.ring(cube.ball(0));
+  const std::vector<Seed> poles = cube.poles();
+  ASSERT_EQ(poles.size(), 1u);
+  EXPECT_LT((poles[0].position - Point(0, 0, 1 - kRadius)).norm(), 1e-12);
+  EXPECT_EQ(poles[0].region, kInsideRegion);
+  EXPECT_EQ(poles[0].kind, SeedKind::Cap);
+  EXPECT_EQ(poles[0].radius, kRadius);
+}
+
+// A pole 0.35 radii from a seed of its material would have a spindle for a cell, squeezed
+// between that seed and the ball's centre.
+TEST(PoleSeeds, NoPoleBesideASeedOfItsMaterial) {
+  TopOfCube cube;
+  const std::uint32_t b = cube.ball(0);
+  cube.ring(b);
+  cube.seed(b, 20, 0);
+  EXPECT_TRUE(cube.poles().empty());
+}
+
+// A seed of another material there is on the far side of a face of the pole's cell, not inside it.
+TEST(PoleSeeds, ASeedOfAnotherMaterialBesideThePoleLeavesIt) {
+  TopOfCube cube;
+  const std::uint32_t b = cube.ball(0);
+  cube.ring(b);
+  cube.seed(b, 20, 0, 2);
+  EXPECT_EQ(cube.poles().size(), 1u);
+}
+
+// Two balls 0.34 radii apart: their poles, as near, would make two thin cells; only the first
+// is placed. 0.5 radii apart, both are.
+TEST(PoleSeeds, PolesKeepApart) {
+  for (const auto& [gap, expected] : {std::pair{0.34, 1u}, std::pair{0.5, 2u}}) {
+    TopOfCube cube;
+    cube.ring(cube.ball(0));
+    cube.ring(cube.ball(gap * kRadius));
+    const std::vector<Seed> poles = cube.poles();
+    ASSERT_EQ(poles.size(), expected) << gap;
+    EXPECT_LT((poles[0].position - Point(0, 0, 1 - kRadius)).norm(), 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace vorocrust
