@@ -84,6 +84,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   mesh_cmd->add_option("--cvt-iterations", mesh.options.cvt_iterations, "Lloyd iterations of --interior cvt")
       ->capture_default_str();
+  mesh_cmd->add_option("--max-aspect-ratio", mesh.options.max_aspect_ratio,
+                       "Split cells whose aspect ratio (enclosing sphere over inscribed ball) exceeds this with a "
+                       "seed at their centroid, for at most 2 rounds; 0: none, else at least 3")
+      ->capture_default_str();
   mesh_cmd->add_option("--format", mesh.formats, kVolumeFormatsHelp)
       ->delimiter(',')
       ->check(CLI::IsMember(volume_format_names()))

@@ -134,6 +134,11 @@ class VoronoiMeshPanel:
         self.cvt_iterations.setToolTip("Lloyd iterations of the cvt interior")
         self.cvt_iterations.setEnabled(self.interior.currentText() == "cvt")
         self.interior.currentTextChanged.connect(lambda mode: self.cvt_iterations.setEnabled(mode == "cvt"))
+        self.max_aspect_ratio = spin(p.GetFloat("MaxAspectRatio", defaults.max_aspect_ratio), 0, 1000, 0.5, 2,
+                                     "Cells whose aspect ratio (enclosing sphere over inscribed ball) exceeds this "
+                                     "get a seed at their centroid, for at most two rounds; 0 splits none, else at "
+                                     "least 3")
+        self.max_aspect_ratio.setSpecialValueText("no splits")
         self.seed = QtGui.QSpinBox()
         self.seed.setRange(0, 2**31 - 1)
         self.seed.setValue(p.GetInt("Seed", defaults.seed))
@@ -146,7 +151,8 @@ class VoronoiMeshPanel:
         for label, widget in (("Tessellation tolerance", self.tolerance), ("Lipschitz L", self.lipschitz),
                               ("Surface", self.smooth), ("Sharp angle", self.sharp_angle),
                               ("Maximum size", self.max_size),
-                              ("Interior", self.interior), ("CVT iterations", self.cvt_iterations), ("Seed", self.seed),
+                              ("Interior", self.interior), ("CVT iterations", self.cvt_iterations),
+                              ("Largest aspect ratio", self.max_aspect_ratio), ("Seed", self.seed),
                               ("Stop after", self.stop_after)):
             grid.addRow(label, widget)
 
@@ -167,7 +173,7 @@ class VoronoiMeshPanel:
         layout.addWidget(self.progress)
         layout.addWidget(self.status)
         self._inputs = [self.tolerance, self.lipschitz, self.smooth, self.sharp_angle, self.max_size, self.interior,
-                        self.seed,
+                        self.max_aspect_ratio, self.seed,
                         self.stop_after, folder_row, formats]  # the CVT box follows the interior mode
         return form
 
@@ -176,7 +182,8 @@ class VoronoiMeshPanel:
         return VoroCrustMesher.Parameters(
             lipschitz=self.lipschitz.value(), smooth=self.smooth.isChecked(), sharp_angle=self.sharp_angle.value(),
             max_size=self.max_size.value(),
-            interior=self.interior.currentText(), cvt_iterations=self.cvt_iterations.value(), seed=self.seed.value(),
+            interior=self.interior.currentText(), cvt_iterations=self.cvt_iterations.value(),
+            max_aspect_ratio=self.max_aspect_ratio.value(), seed=self.seed.value(),
             tolerance=self.tolerance.value(), stop_after=self.stop_after.currentText())
 
     def _smooth_toggled(self, smooth):
@@ -199,6 +206,7 @@ class VoronoiMeshPanel:
         p.SetFloat("MaxSize", parameters.max_size)
         p.SetString("Interior", parameters.interior)
         p.SetInt("CvtIterations", parameters.cvt_iterations)
+        p.SetFloat("MaxAspectRatio", parameters.max_aspect_ratio)
         p.SetInt("Seed", parameters.seed)
         p.SetString("StopAfter", parameters.stop_after)
         p.SetString("OutputFolder", self.folder.text())

@@ -54,6 +54,7 @@ class Parameters:
     max_size: float = 0.0
     interior: str = vorocrust.DEFAULT_OPTIONS["interior"]
     cvt_iterations: int = vorocrust.DEFAULT_OPTIONS["cvt_iterations"]
+    max_aspect_ratio: float = vorocrust.DEFAULT_OPTIONS["max_aspect_ratio"]
     seed: int = vorocrust.DEFAULT_OPTIONS["seed"]
     tolerance: float = 0.1
     stop_after: str = vorocrust.DEFAULT_OPTIONS["stop_after"]
@@ -63,7 +64,8 @@ class Parameters:
         """The keyword arguments of vorocrust.mesh()."""
         return dict(lipschitz=self.lipschitz, smooth=self.smooth, sharp_angle=self.sharp_angle,
                     max_size=self.max_size if self.max_size > 0 else None, interior=self.interior,
-                    cvt_iterations=self.cvt_iterations, stop_after=self.stop_after, seed=self.seed,
+                    cvt_iterations=self.cvt_iterations, max_aspect_ratio=self.max_aspect_ratio,
+                    stop_after=self.stop_after, seed=self.seed,
                     threads=self.threads)
 
 
@@ -294,6 +296,8 @@ class VoronoiMeshResult:
         add("App::PropertyFloat", "MaxSize", "Parameters", "Largest ball radius and cell size (0: no bound)")
         add("App::PropertyString", "Interior", "Parameters", "How the volume is seeded: random, lattice or cvt")
         add("App::PropertyInteger", "CvtIterations", "Parameters", "Lloyd iterations of the cvt interior")
+        add("App::PropertyFloat", "MaxAspectRatio", "Parameters",
+            "Cells of a larger aspect ratio were split at their centroids (0: none)")
         add("App::PropertyInteger", "Seed", "Parameters", "Random seed")
         add("App::PropertyString", "StopAfter", "Parameters", "The last stage run: surface or cells")
         add("App::PropertyPath", "OutputFolder", "Output", "Where the files were written")
@@ -324,6 +328,7 @@ class VoronoiMeshResult:
         obj.MaxSize = parameters.max_size
         obj.Interior = parameters.interior
         obj.CvtIterations = parameters.cvt_iterations
+        obj.MaxAspectRatio = parameters.max_aspect_ratio
         obj.Seed = parameters.seed
         obj.StopAfter = result.stop_after
         obj.OutputFolder = output_dir

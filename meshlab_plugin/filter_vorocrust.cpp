@@ -30,6 +30,7 @@ const char* const kSeed = "seed";
 const char* const kResolveSelfIntersections = "resolveSelfIntersections";
 const char* const kInterior = "interior";
 const char* const kCvtIterations = "cvtIterations";
+const char* const kMaxAspectRatio = "maxAspectRatio";
 const char* const kOutputFolder = "outputFolder";
 const char* const kWriteVtu = "writeVtu";
 const char* const kWriteOpenFoam = "writeOpenFoam";
@@ -131,6 +132,7 @@ VoronoiRequest voronoi_request(const RichParameterList& parameters) {
   }
   request.options.interior = kInteriorModes[interior];
   request.options.cvt_iterations = parameters.getInt(kCvtIterations);
+  request.options.max_aspect_ratio = parameters.getFloat(kMaxAspectRatio);
   request.options.check();
   const QString folder = parameters.getString(kOutputFolder).trimmed();
   if (request.output.any() && folder.isEmpty()) throw Error(Error::Kind::Usage, "no output folder given");
@@ -295,6 +297,10 @@ void FilterVoroCrustPlugin::initParameterSet(QAction* action, MeshDocument& md, 
                                "centroidal cells (paper section 2.5)."));
   parameters.addParam(RichInt(kCvtIterations, vorocrust::MeshOptions().cvt_iterations, "CVT iterations",
                               "Lloyd iterations of the cvt interior mode."));
+  parameters.addParam(RichFloat(kMaxAspectRatio, float(vorocrust::MeshOptions().max_aspect_ratio),
+                                "Largest cell aspect ratio",
+                                "Cells whose aspect ratio (enclosing sphere over inscribed ball) exceeds this get a "
+                                "seed at their centroid, for at most two rounds; 0 splits none, else at least 3."));
   parameters.addParam(RichString(kOutputFolder, default_output_folder(m), "Output folder",
                                  "Where the files asked for are written (made when missing); files not asked for "
                                  "are left as they are."));

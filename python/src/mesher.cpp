@@ -229,6 +229,7 @@ the same document as the CLI's OUTDIR/report.json.
     d["smooth_min_triangle_angle"] = MeshOptions::kSmoothMinTriangleAngleDegrees;
     d["interior"] = to_string(defaults.interior);
     d["cvt_iterations"] = defaults.cvt_iterations;
+    d["max_aspect_ratio"] = defaults.max_aspect_ratio;
     d["stop_after"] = stage_name(defaults.stop_after);
     d["seed"] = defaults.seed;
     d["threads"] = defaults.threads;
@@ -240,7 +241,7 @@ the same document as the CLI's OUTDIR/report.json.
       [](const py::object& model, double lipschitz, bool smooth, const std::optional<double>& sharp_angle,
          const py::object& max_size, const py::object& sizing, const std::optional<int>& smoothing_iterations,
          const std::optional<double>& min_triangle_angle, const std::string& interior, int cvt_iterations,
-         const std::string& stop_after, std::uint64_t seed, int threads, const std::string& self_intersections,
+         double max_aspect_ratio, const std::string& stop_after, std::uint64_t seed, int threads, const std::string& self_intersections,
          const std::optional<std::array<double, 6>>& box, const py::object& progress) {
         MeshOptions options;
         options.lipschitz = lipschitz;
@@ -252,6 +253,7 @@ the same document as the CLI's OUTDIR/report.json.
         options.min_triangle_angle_degrees = min_triangle_angle;
         options.interior = interior_named(interior);
         options.cvt_iterations = cvt_iterations;
+        options.max_aspect_ratio = max_aspect_ratio;
         options.stop_after = stage_named(stop_after);
         options.seed = seed;
         options.threads = threads;
@@ -261,7 +263,8 @@ the same document as the CLI's OUTDIR/report.json.
       },
       py::arg("model"), py::arg("lipschitz"), py::arg("smooth"), py::arg("sharp_angle"), py::arg("max_size"),
       py::arg("sizing"),
-      py::arg("smoothing_iterations"), py::arg("min_triangle_angle"), py::arg("interior"), py::arg("cvt_iterations"), py::arg("stop_after"),
+      py::arg("smoothing_iterations"), py::arg("min_triangle_angle"), py::arg("interior"), py::arg("cvt_iterations"),
+      py::arg("max_aspect_ratio"), py::arg("stop_after"),
       py::arg("seed"), py::arg("threads"), py::arg("self_intersections"), py::arg("box"), py::arg("progress"),
       "The pipeline behind vorocrust.mesh(), which documents the arguments.");
 }

@@ -84,7 +84,7 @@ OUTPUT_FORMATS = {
 def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTIONS["smooth"], sharp_angle=None,
          max_size=None, sizing=None, smoothing_iterations=None, min_triangle_angle=None,
          interior=DEFAULT_OPTIONS["interior"], cvt_iterations=DEFAULT_OPTIONS["cvt_iterations"],
-         stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
+         max_aspect_ratio=DEFAULT_OPTIONS["max_aspect_ratio"], stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
          self_intersections=DEFAULT_OPTIONS["self_intersections"], box=None, progress=None):
     """Meshes a model: `vorocrust mesh` without the files. Returns a MeshResult.
 
@@ -106,6 +106,9 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTION
         ["smooth_min_triangle_angle"] (30) when smooth.
     interior: how the volume is seeded: "random", "lattice" or "cvt" (paper 2.5).
     cvt_iterations: Lloyd iterations of interior="cvt".
+    max_aspect_ratio: cells whose aspect ratio (enclosing sphere over inscribed ball) exceeds this
+        get a seed at their centroid, for at most 2 rounds; 0 for none, else at least 3
+        (--max-aspect-ratio).
     stop_after: "balls", "surface" or "cells" (the whole mesh).
     seed: random seed; equal model, options and seed give equal results.
     threads: worker threads, 0 for all cores; results do not depend on it.
@@ -135,7 +138,7 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTION
         smoothing_iterations=None if smoothing_iterations is None else int(smoothing_iterations),
         min_triangle_angle=None if min_triangle_angle is None else float(min_triangle_angle),
         interior=interior,
-        cvt_iterations=int(cvt_iterations), stop_after=stop_after, seed=int(seed), threads=int(threads),
+        cvt_iterations=int(cvt_iterations), max_aspect_ratio=float(max_aspect_ratio), stop_after=stop_after, seed=int(seed), threads=int(threads),
         self_intersections=self_intersections,
         box=None if box is None else tuple(float(x) for x in box), progress=progress)
 

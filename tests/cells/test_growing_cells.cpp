@@ -11,6 +11,7 @@
 #include "cells/mesh_checks.hpp"
 #include "cells/seed_sets.hpp"
 #include "test_support.hpp"
+#include "vorocrust/cell_quality.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/face_skewness.hpp"
 #include "vorocrust/mesher.hpp"
@@ -145,6 +146,43 @@ TEST(GrowingCells, SeedsCanOnlyBeAdded) {
   cells::GrowingCells growing(seeds, {});
   seeds.pop_back();
   EXPECT_THROW(growing.add_seeds(seeds), Error);
+}
+
+// The split of cells too long finds them on the cells as cut: the cells the quality of the mesh
+// puts above the bound, with their centroids to round-off; after seeds are added, those of all
+// the seeds cut afresh.
+TEST(GrowingCells, LongCellsAreTheMeshCellsAboveTheBound) {
+  MeshOptions options;
+  options.seed = 3;
+  const MeshResult r = generate_mesh(read_mesh(test::model("cgal_joint.off")), options);
+  constexpr double kBound = 3.5;
+  const auto [all, kept] = held_back(r.seeds, 97);
+  cells::GrowingCells growing(std::vector<Seed>(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(kept)), {});
+  growing.long_cells(kBound);
+  growing.add_seeds(all);
+  const std::vector<cells::LongCell> found = growing.long_cells(kBound);
+  const VoronoiMesh mesh = growing.mesh();
+  const CellQuality quality = measure_cell_quality(mesh);
+  std::map<Index, const VoronoiCell*> above;
+  for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
+    if (quality.cells[c].aspect_ratio > kBound * (1 + 1e-9)) above[mesh.cells[c].seed] = &mesh.cells[c];
+  }
+  EXPECT_GT(above.size(), 10u);
+  std::size_t matched = 0;
+  for (const cells::LongCell& cell : found) {
+    const auto it = above.find(cell.seed);
+    if (it == above.end()) continue;  // at the bound to round-off
+    ++matched;
+    EXPECT_LT((cell.centroid - it->second->centroid).norm(), 1e-9) << "seed " << cell.seed;
+  }
+  EXPECT_EQ(matched, above.size());
+  EXPECT_LE(found.size(), above.size() + 2);
+  const std::vector<cells::LongCell> fresh = cells::GrowingCells(all, {}).long_cells(kBound);
+  ASSERT_EQ(fresh.size(), found.size());
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    EXPECT_EQ(fresh[k].seed, found[k].seed);
+    EXPECT_EQ(fresh[k].centroid, found[k].centroid);
+  }
 }
 
 }  // namespace

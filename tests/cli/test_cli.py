@@ -134,6 +134,10 @@ class Usage(unittest.TestCase):
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--lipschitz", "1.5")
             self.assertEqual(r.returncode, 2)
             self.assertIn("--lipschitz must lie strictly between 0 and 1", r.stderr)
+            for bad in ("2", "-1", "inf"):
+                r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-aspect-ratio", bad)
+                self.assertEqual(r.returncode, 2, bad)
+                self.assertIn("--max-aspect-ratio must be 0 (no splits) or at least 3", r.stderr)
 
 
 class Mesh(unittest.TestCase):

@@ -92,6 +92,9 @@ def main():
     panel.interior.setCurrentText("cvt")
     check(panel.cvt_iterations.isEnabled(), "CVT iterations not offered for the cvt interior")
     panel.interior.setCurrentText("random")
+    check(panel.max_aspect_ratio.value() == vorocrust.DEFAULT_OPTIONS["max_aspect_ratio"] == 5,
+          "largest aspect ratio %r" % panel.max_aspect_ratio.value())
+    check(panel.parameters().max_aspect_ratio == 5, "the panel's parameters lose the largest aspect ratio")
 
     # "Smooth surface" moves the sharp angle to the paper's for smooth models and back, and leaves
     # an angle the user chose alone.

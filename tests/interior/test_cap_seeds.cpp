@@ -88,5 +88,44 @@ TEST(PoleSeeds, PolesKeepApart) {
   }
 }
 
+// One cell of the inside too long: its seed and centroid.
+struct OneCell {
+  std::vector<Seed> seeds;
+  std::vector<cells::LongCell> long_cells;
+  OneCell(const Point& site, const Point& centroid) {
+    seeds.push_back(Seed{site, kInsideRegion, 0.1, SeedKind::Cap});
+    long_cells.push_back({0, centroid});
+  }
+  std::vector<Seed> splits(const TopOfCube& cube, const std::vector<Seed>& placed = {}) const {
+    return aspect_split_seeds(long_cells, seeds, cube.balls, RegionLocator(cube.surface), placed);
+  }
+};
+
+TEST(AspectSplitSeeds, ACellTooLongGetsASeedAtItsCentroid) {
+  TopOfCube cube;
+  cube.ball(0);
+  const OneCell cell(Point(0, 0, 0.8), Point(0, 0, 0.5));
+  const std::vector<Seed> splits = cell.splits(cube);
+  ASSERT_EQ(splits.size(), 1u);
+  EXPECT_EQ(splits[0].position, Point(0, 0, 0.5));
+  EXPECT_EQ(splits[0].region, kInsideRegion);
+  EXPECT_EQ(splits[0].kind, SeedKind::Repair);
+  EXPECT_NEAR(splits[0].radius, 0.3, 1e-12);
+  // Clear of the seeds placed on spheres and before.
+  EXPECT_TRUE(cell.splits(cube, {Seed{Point(0, 0, 0.51), kInsideRegion, 0.2, SeedKind::Cap}}).empty());
+}
+
+// A centroid inside a ball moves to 1.15 radii from its centre, if that leaves it nearer the
+// centroid than the cell's seed; a cell whose centroid is outside its material keeps its shape.
+TEST(AspectSplitSeeds, ACentroidInABallIsPushedOutOrTheCellKeepsItsShape) {
+  TopOfCube cube;
+  cube.ball(0);
+  const std::vector<Seed> pushed = OneCell(Point(0, 0, 0.4), Point(0, 0, 0.85)).splits(cube);
+  ASSERT_EQ(pushed.size(), 1u);
+  EXPECT_NEAR((pushed[0].position - Point(0, 0, 1 - 1.15 * kRadius)).norm(), 0, 1e-9);
+  EXPECT_TRUE(OneCell(Point(0, 0, 0.79), Point(0, 0, 0.85)).splits(cube).empty());
+  EXPECT_TRUE(OneCell(Point(0.5, 0, 0.9), Point(0.5, 0, 1.1)).splits(cube).empty());
+}
+
 }  // namespace
 }  // namespace vorocrust

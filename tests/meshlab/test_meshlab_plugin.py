@@ -259,10 +259,12 @@ def balls_script(path, seed=SEED, lipschitz=0.25, resolve=True, smooth=False):
                   maxSize=("abs", 0.0), seed=seed, resolveSelfIntersections=resolve)
 
 
-def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20, all_visible=False, resolve=True):
+def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20, all_visible=False, resolve=True,
+                   max_aspect_ratio=5.0):
     return script(path, "VoroCrust Voronoi Mesh", lipschitz=0.25, smoothSurface=False, sharpAngle=30.0,
                   maxSize=("abs", 0.0), seed=seed,
-                  resolveSelfIntersections=resolve, interior=("enum", 0), cvtIterations=cvt_iterations, outputFolder=folder, writeVtu=vtu,
+                  resolveSelfIntersections=resolve, interior=("enum", 0), cvtIterations=cvt_iterations,
+                  maxAspectRatio=max_aspect_ratio, outputFolder=folder, writeVtu=vtu,
                   writeOpenFoam=openfoam, writeTough=openfoam, writePflotran=openfoam, writeSeeds=True,
                   writeSurface=True, allVisibleLayers=all_visible)
 
@@ -535,6 +537,10 @@ class MeshLabCase(unittest.TestCase):
             self.assert_fails_with(cube, voronoi_script(os.path.join(self.work, "v_cvt.mlx"), folder, False, False,
                                                         cvt_iterations=-1),
                                    "VoroCrust: usage error:", "cvt-iterations must be 0 or positive")
+        with self.subTest(input="a largest aspect ratio below 3"):
+            self.assert_fails_with(cube, voronoi_script(os.path.join(self.work, "v_ar.mlx"), folder, False, False,
+                                                        max_aspect_ratio=2.0),
+                                   "VoroCrust: usage error:", "max-aspect-ratio must be 0 (no splits) or at least 3")
         with self.subTest(input="an output folder that cannot be made"):
             blocker = os.path.join(self.work, "a_file")
             open(blocker, "w").close()

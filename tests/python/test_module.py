@@ -247,6 +247,21 @@ class Module(unittest.TestCase):
         self.assertGreater(rules["features"]["corners"], 0)
         self.assertEqual(unsmoothed["features"], rules["features"])
 
+    def test_max_aspect_ratio_is_the_programs(self):
+        # Cells above the bound split at their centroids, as the program splits them; 0 splits none.
+        out = self.out("aspect")
+        r = cli("mesh", JOINT, "-o", out, "--seed", "7", "--max-aspect-ratio", "4", "--format", "vtu", "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        result = vorocrust.mesh(JOINT, seed=7, max_aspect_ratio=4)
+        report = result.report()
+        self.assertEqual(report["options"]["max_aspect_ratio"], 4)
+        self.assertGreater(report["interior"]["aspect_split_seeds"], 0)
+        np.testing.assert_array_equal(result.seeds.positions, read_seeds_csv(os.path.join(out, "seeds.csv"))[0])
+        self.assertEqual(vorocrust.mesh(JOINT, seed=7, max_aspect_ratio=0).report()["interior"]["aspect_split_seeds"], 0)
+        self.assertEqual(vorocrust.DEFAULT_OPTIONS["max_aspect_ratio"], 5)
+        with self.assertRaises(vorocrust.UsageError):
+            vorocrust.mesh(JOINT, max_aspect_ratio=2)
+
     def test_an_open_sheet_meshes_in_the_box_given(self):
         # A square sheet across the middle of the unit cube: one material on both sides.
         vertices = np.array([[0.2, 0.2, 0.5], [0.8, 0.2, 0.5], [0.8, 0.8, 0.5], [0.2, 0.8, 0.5]])

@@ -102,6 +102,14 @@ struct MeshOptions {
   SelfIntersections self_intersections = SelfIntersections::Resolve;
   InteriorMode interior = InteriorMode::Random;
   int cvt_iterations = 20;  // Lloyd iterations of InteriorMode::Cvt
+  // Cells whose aspect ratio (smallest enclosing sphere over largest inscribed ball) exceeds this
+  // get a seed at their centroid, for at most 2 rounds (interior/cap_seeds.hpp,
+  // aspect_split_seeds); 0 splits none. 5, the paper's bound for its smooth model (4.86): on
+  // igl_bunny with `smooth` the worst cells are spindles from a ball's centre to deep inside,
+  // which no interior seed reaches within the balls' clearance. A cell thinner than the balls
+  // beside it cannot be split this way and keeps its shape.
+  double max_aspect_ratio = kDefaultMaxAspectRatio;
+  static constexpr double kDefaultMaxAspectRatio = 5, kLowestMaxAspectRatio = 3;
   Stage stop_after = Stage::Cells;
   std::uint64_t seed = 0;  // random seed; equal seeds give equal meshes
   int threads = 0;         // worker threads generate_mesh runs on, 0 = all hardware threads
@@ -168,9 +176,12 @@ struct InteriorStats {
   std::size_t interior_seeds = 0;  // seeds inside a material, away from the surface
   std::size_t outside_seeds = 0;   // seeds outside every material, bounding the boundary cells
   std::size_t cap_seeds = 0;       // seeds on protecting spheres (poles and skew repairs), SeedKind::Cap
-  std::size_t split_seeds = 0;     // seeds splitting a cell about a highly skew face, SeedKind::Repair
+  std::size_t split_seeds = 0;     // seeds splitting a cell (about a highly skew face, or too long), SeedKind::Repair
   std::size_t repair_seeds = 0;    // placed to remove highly skew faces after the cells: caps and splits
   int repair_rounds = 0;           // rounds of those repairs (each computing the cells again)
+  std::size_t aspect_split_seeds = 0;  // placed at the centroids of cells above MeshOptions::max_aspect_ratio
+  int aspect_split_rounds = 0;         // rounds of those kept (each cutting the cells about them again)
+  int aspect_split_rounds_undone = 0;  // a round after which more faces stayed highly skew is undone
   std::size_t darts = 0;           // seeds from dart throwing
   std::size_t spokes = 0;          // spokes shot
   std::size_t spoke_seeds = 0;     // seeds placed on spokes

@@ -16,6 +16,7 @@
 #include "cells/voronoi_cells.hpp"
 #include "cells/weld_vertices.hpp"
 #include "geometry/curve_order.hpp"
+#include "quality/cell_spheres.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
 
@@ -255,6 +256,7 @@ void GrowingCells::cut_all() {
     raw_ = compute_voronoi_cells(frame_.normalized, cell_seeds_);
   });
   cut_since_.assign(raw_.size(), 1);
+  ratio_stale_.assign(raw_.size(), 1);
 }
 
 void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
@@ -280,7 +282,8 @@ void GrowingCells::add_seeds(const std::vector<Seed>& seeds) {
     raw_.resize(cell_seeds_.size());
     recompute_voronoi_cells(frame_.normalized, cell_seeds_, which, 0, raw_);
     cut_since_.resize(raw_.size(), 1);
-    for (std::size_t c : which) cut_since_[c] = 1;
+    ratio_stale_.resize(raw_.size(), 1);
+    for (std::size_t c : which) cut_since_[c] = ratio_stale_[c] = 1;
   });
 }
 
@@ -320,13 +323,68 @@ bool spans_an_area(const RawCell& cell, std::size_t f, const Point& seed) {
   return found == 3;
 }
 
+std::size_t face_size(const RawCell& cell, std::size_t f) { return std::size_t{cell.starts[f + 1] - cell.starts[f]}; }
+
+// The accessor of face f's points in order, for polygon_measures.hpp.
+auto face_points(const RawCell& cell, std::size_t f) {
+  return [&cell, f](std::size_t k) -> const Point& { return cell.vertices[cell.cycles[cell.starts[f] + k]]; };
+}
+
+Point centroid_of(const RawCell& cell) {
+  double volume = 0;
+  Point moment = Point::Zero();
+  for (std::size_t f = 0; f < cell.num_faces(); ++f) {
+    add_cone(cell.vertices.front(), face_size(cell, f), face_points(cell, f), true, volume, moment);
+  }
+  return moment / volume;
+}
+
+// An upper bound on a cell's aspect ratio from its seed `s`, which lies inside it: the ball about
+// s through the farthest vertex encloses the cell, and the ball about s to the nearest face plane
+// lies inside it. Most cells are well below a bound worth splitting at, and this spares them the
+// two spheres.
+double aspect_ratio_above(const RawCell& cell, const Point& s) {
+  double farthest = 0, nearest = std::numeric_limits<double>::infinity();
+  for (const Point& v : cell.vertices) farthest = std::max(farthest, (v - s).squaredNorm());
+  for (std::size_t f = 0; f < cell.num_faces(); ++f) {
+    const FaceGeometry g = polygon_geometry(face_size(cell, f), face_points(cell, f));
+    nearest = std::min(nearest, std::abs(g.normal.dot(g.centroid - s)));
+  }
+  return nearest > 0 ? std::sqrt(farthest) / nearest : std::numeric_limits<double>::infinity();
+}
+
 }  // namespace
 
+std::vector<LongCell> GrowingCells::long_cells(double bound) {
+  if (bound != ratio_bound_) std::fill(ratio_stale_.begin(), ratio_stale_.end(), 1);
+  ratio_bound_ = bound;
+  aspect_ratio_.resize(raw_.size(), 0);
+  ratio_stale_.resize(raw_.size(), 1);
+  in_arena([&] {
+    tbb::parallel_for(std::size_t{0}, raw_.size(), [&](std::size_t c) {
+      if (!ratio_stale_[c]) return;
+      const RawCell& cell = raw_[c];
+      // Within the bound by the cheap figure, with a margin for its rounding: no need of the
+      // exact one.
+      aspect_ratio_[c] = aspect_ratio_above(cell, frame_.normalized[cell_seeds_[c]]);
+      if (aspect_ratio_[c] * (1 + 1e-9) <= bound) return;
+      aspect_ratio_[c] =
+          quality::cell_spheres(cell.vertices, cell.num_faces(), [&](std::size_t f) { return face_size(cell, f); },
+                                [&](std::size_t f, std::size_t k) -> const Point& { return face_points(cell, f)(k); })
+              .aspect_ratio();
+    });
+  });
+  std::fill(ratio_stale_.begin(), ratio_stale_.end(), 0);
+  std::vector<LongCell> out;
+  for (std::size_t c = 0; c < raw_.size(); ++c) {
+    if (aspect_ratio_[c] > bound) out.push_back({cell_seeds_[c], frame_.centre + frame_.scale * centroid_of(raw_[c])});
+  }
+  return out;
+}
+
 std::vector<CutFace> GrowingCells::skew_faces(double threshold) {
-  const auto point_at = [](const RawCell& cell, std::size_t f) {
-    return [&cell, f](std::size_t k) -> const Point& { return cell.vertices[cell.cycles[cell.starts[f] + k]]; };
-  };
-  const auto size = [](const RawCell& cell, std::size_t f) { return std::size_t{cell.starts[f + 1] - cell.starts[f]}; };
+  const auto point_at = face_points;
+  const auto size = face_size;
   const auto original = [&](const Point& p) { return Point(frame_.centre + frame_.scale * p); };  // out of the frame
   if (threshold != skew_threshold_) std::fill(cut_since_.begin(), cut_since_.end(), 1);
   skew_threshold_ = threshold;
@@ -336,14 +394,7 @@ std::vector<CutFace> GrowingCells::skew_faces(double threshold) {
   const std::vector<char> measure = with_neighbours(raw_, cell_of_seed_, cut_since_);
   in_arena([&] {
     tbb::parallel_for(std::size_t{0}, raw_.size(), [&](std::size_t c) {
-      if (!cut_since_[c]) return;
-      const RawCell& cell = raw_[c];
-      double volume = 0;
-      Point moment = Point::Zero();
-      for (std::size_t f = 0; f < cell.num_faces(); ++f) {
-        add_cone(cell.vertices.front(), size(cell, f), point_at(cell, f), true, volume, moment);
-      }
-      centroid_[c] = moment / volume;
+      if (cut_since_[c]) centroid_[c] = centroid_of(raw_[c]);
     });
     tbb::parallel_for(std::size_t{0}, raw_.size(), [&](std::size_t c) {
       if (!measure[c]) return;

@@ -37,6 +37,12 @@ struct CutFace {
   Point neighbour_centroid = Point::Zero();  // where there is a cell across
 };
 
+// A cell whose aspect ratio exceeds a bound: its seed and its centroid.
+struct LongCell {
+  Index seed = 0;
+  Point centroid = Point::Zero();
+};
+
 class GrowingCells {
  public:
   GrowingCells(const std::vector<Seed>& seeds, const CellsOptions& options);
@@ -46,6 +52,10 @@ class GrowingCells {
   // Measured again only for the cells cut since the last call and their neighbours (a face's
   // skewness needs both centroids); the same faces as measuring every cell.
   std::vector<CutFace> skew_faces(double threshold);
+  // The cells whose aspect ratio exceeds `bound`, as cell_quality measures it but on the cells as
+  // cut, in the order of their cells. Measured again only for the cells cut since the last call:
+  // the split of cells too long needs no welded mesh, which costs far more to make than this.
+  std::vector<LongCell> long_cells(double bound);
 
  private:
   void add_cell(std::size_t seed);
@@ -64,6 +74,11 @@ class GrowingCells {
   std::vector<Point> centroid_;
   std::vector<std::vector<CutFace>> owned_skew_;
   std::vector<char> cut_since_;
+  // long_cells' figures per cell, kept between calls: its aspect ratio (or a bound on it within
+  // ratio_bound_), and whether it was cut since that was measured.
+  std::vector<double> aspect_ratio_;
+  std::vector<char> ratio_stale_;
+  double ratio_bound_ = 0;
   double skew_threshold_ = 0;
 };
 

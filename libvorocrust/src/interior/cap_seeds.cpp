@@ -32,6 +32,17 @@ constexpr std::uint32_t kNoBall = static_cast<std::uint32_t>(-1);
 constexpr double kNearCentre = 0.5;
 constexpr double kCloseSpacing = 0.01;
 constexpr double kPoleOffSeed = 1e-3;  // a pole nearer a seed than this, in radii, would be its twin
+// A split of a cell too long stays this far outside every ball, in radii: at 1.05, as seeds on
+// spheres do, it cuts small faces about the ball's centre, which the skew repair then crowds with
+// seeds on the sphere (igl_fertility: cells of aspect ratio 19 between seeds 0.03 radii apart);
+// at 1.3, as interior seeds do, it lies too deep to halve a spindle (igl_bunny --smooth --seed 1
+// keeps a cell of 5.18).
+constexpr double kSplitClearance = 1.15;
+// A split stays this far from every seed, in units of the distance from the centroid to the
+// cell's seed: nearer, the two cut a small face between them, which may stay highly skew
+// (openmeeg_HeadNNa1: splits 0.13 of that apart, where its sheets cross, left two faces of
+// skewness 14.4). On igl_bunny --smooth the splits it needs lie 0.75 apart or more.
+constexpr double kSplitApart = 0.5;
 // A pole's cell is a cone from its ball's centre, as wide as the seeds of its material around the
 // pole leave it: with one of them nearer than this, in radii, it is a spindle (igl_bunny
 // --smooth: aspect ratios 5 to 6, its worst cells). Such a pole is not placed; the seeds about it
@@ -84,7 +95,11 @@ void spheres_through(const BallIndex& balls, const Point& p, double scale, std::
 // Decides where a seed on a sphere may go, and remembers those placed.
 class SphereSeeds {
  public:
-  SphereSeeds(const BallIndex& balls, const RegionLocator& regions) : balls_(balls), regions_(regions) {}
+  // `placed`: seeds on spheres and splits placed before, which those placed now keep clear of.
+  SphereSeeds(const BallIndex& balls, const RegionLocator& regions, const std::vector<Seed>& placed = {})
+      : balls_(balls), regions_(regions) {
+    for (const Seed& s : placed) remember(s);
+  }
 
   void remember(const Seed& s) { placed_.insert(s.position, kSpacing * s.radius, count_++); }
   // Whether p lies within `spacing` (a fraction of kSpacing) of the radius of a seed placed.
@@ -124,29 +139,48 @@ class SphereSeeds {
   // spheres but where it lies on one.
   bool clear_of_balls(const Point& p, std::uint32_t own) { return !blocking_ball(p, own); }
 
-  // p moved out of the balls that hold it or lie too near, each time radially to the clearance
-  // of the one nearest to holding it, a few times at most; nothing when it does not get clear.
-  std::optional<Point> pushed_clear(Point p) {
+  // A seed of `region` at `target`, pushed out of the balls to `clearance` (pushed_clear), if it
+  // stays nearer the target than `from`, the seed of the cell it splits, is: pushed farther, it
+  // would take that seed's end of the cell instead. `direction`: the ray that finds its side;
+  // `accept(p, reach)` may refuse the point p, `reach` being the distance from `from` to the target.
+  template <class Accept>
+  std::optional<Seed> place_split(const Point& target, const Point& from, std::int32_t region, const Point& direction,
+                                  double clearance, Accept&& accept) {
+    const double reach = (target - from).norm();
+    const std::optional<Point> p = pushed_clear(target, clearance);
+    if (!p || !(reach > 0) || !((*p - target).norm() < reach) || regions_.region_of(*p, direction) != region ||
+        near_placed(*p) || !accept(*p, reach)) {
+      return std::nullopt;
+    }
+    Seed seed{*p, region, reach, SeedKind::Repair};
+    remember(seed);
+    return seed;
+  }
+
+  // p moved out of the balls that hold it or lie too near (within `clearance` times their
+  // radii), each time radially to the clearance of the one nearest to holding it, a few times at
+  // most; nothing when it does not get clear.
+  std::optional<Point> pushed_clear(Point p, double clearance = kClearance) {
     for (int step = 0; step < 12; ++step) {
-      const std::optional<std::uint32_t> q = blocking_ball(p, kNoBall);
+      const std::optional<std::uint32_t> q = blocking_ball(p, kNoBall, clearance);
       if (!q) return p;
       const Point& centre = balls_[*q].site.position;
       const Point away = p - centre;
       if (!(away.norm() > 0)) return std::nullopt;
-      p = centre + kClearance * (1 + 1e-9) * balls_[*q].radius * away.normalized();
+      p = centre + clearance * (1 + 1e-9) * balls_[*q].radius * away.normalized();
     }
     return std::nullopt;
   }
 
  private:
-  // The ball p is deepest in, in radii, among those it lies inside or within the clearance of
-  // (other than `own`, and than those on whose sphere it lies).
-  std::optional<std::uint32_t> blocking_ball(const Point& p, std::uint32_t own) {
+  // The ball p is deepest in, in radii, among those it lies inside or within `clearance` times
+  // the radius of (other than `own`, and than those on whose sphere it lies).
+  std::optional<std::uint32_t> blocking_ball(const Point& p, std::uint32_t own, double clearance = kClearance) {
     std::optional<std::uint32_t> deepest;
     double depth = 0;
     for (StratumType type : kTypes) {
       near_.clear();
-      balls_.reaching_scaled(type, p, kClearance, 0, near_);
+      balls_.reaching_scaled(type, p, clearance, 0, near_);
       for (std::uint32_t q : near_) {
         if (q == own || on_sphere_of(p, balls_[q].site.position, balls_[q].radius)) continue;
         const double d = (p - balls_[q].site.position).norm();
@@ -222,8 +256,7 @@ std::vector<Seed> pole_seeds(const std::vector<Seed>& surface_seeds, const BallI
 std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, const std::vector<Seed>& seeds,
                                     const BallIndex& balls, const RegionLocator& regions,
                                     const std::vector<Seed>& placed) {
-  SphereSeeds place(balls, regions);
-  for (const Seed& s : placed) place.remember(s);
+  SphereSeeds place(balls, regions, placed);
   std::vector<Seed> added;
   std::vector<std::uint32_t> a, b;
   // The directions from a sphere's centre of the seeds of `region` on it, through a tree of the
@@ -249,16 +282,10 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     // A seed at `target`, pushed out of the balls near it, if it stays nearer the target than
     // `from` (a seed of the face) is: it takes the part of the cells about the target.
     const auto place_near = [&](const Point& target, const Point& from) {
-      const double reach = (target - from).norm();
-      const std::optional<Point> p = place.pushed_clear(target);
-      if (!p || !(reach > 0) || !((*p - target).norm() < reach) || regions.region_of(*p, g.normal) != region ||
-          place.near_placed(*p)) {
-        return false;
-      }
-      Seed seed{*p, region, reach, SeedKind::Repair};
-      place.remember(seed);
-      added.push_back(seed);
-      return true;
+      const std::optional<Seed> seed =
+          place.place_split(target, from, region, g.normal, kClearance, [](const Point&, double) { return true; });
+      if (seed) added.push_back(*seed);
+      return seed.has_value();
     };
     // The cell whose centroid lies farther from its seed split at its centroid: that draws the
     // centroid back toward the seed, and the link between the two centroids back through the face.
@@ -324,6 +351,31 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     if (place_near(g.centroid, s.position)) continue;
     // No seed may go near the face either (it lies inside a ball).
     split_farther();
+  }
+  return added;
+}
+
+std::vector<Seed> aspect_split_seeds(const std::vector<cells::LongCell>& long_cells, const std::vector<Seed>& seeds,
+                                     const BallIndex& balls, const RegionLocator& regions,
+                                     const std::vector<Seed>& placed) {
+  SphereSeeds place(balls, regions, placed);
+  const SeedCloud cloud{&seeds};
+  const StaticKdTree<SeedCloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  std::vector<std::uint32_t> near;
+  BallTree splits;  // those placed here, each with kSplitApart of its reach
+  const auto apart = [&](const Point& p, double reach) {
+    const double gap = kSplitApart * reach;
+    points_within(tree, p, gap * gap, near);
+    return near.empty() && !splits.contains(p);
+  };
+  std::vector<Seed> added;
+  for (const cells::LongCell& cell : long_cells) {
+    const Seed& own = seeds[cell.seed];
+    if (const std::optional<Seed> seed = place.place_split(cell.centroid, own.position, own.region,
+                                                           cell.centroid - own.position, kSplitClearance, apart)) {
+      splits.insert(seed->position, kSplitApart * seed->radius, static_cast<std::uint32_t>(added.size()));
+      added.push_back(*seed);
+    }
   }
   return added;
 }

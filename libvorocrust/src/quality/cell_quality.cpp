@@ -11,7 +11,7 @@
 #include <string>
 
 #include "quality/face_figures.hpp"
-#include "quality/spheres.hpp"
+#include "quality/cell_spheres.hpp"
 #include "vorocrust/cell_quality.hpp"
 #include "vorocrust/face_skewness.hpp"
 #include "vorocrust/error.hpp"
@@ -65,45 +65,15 @@ CellShape measure_cell(const VoronoiMesh& mesh, const VoronoiCell& cell) {
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   std::vector<Point> points;
   points.reserve(ids.size());
-  Point mean = Point::Zero();
-  for (Index p : ids) {
-    points.push_back(mesh.points[p]);
-    mean += points.back();
-  }
-  mean /= static_cast<double>(points.size());
-  double extent = 0;
-  for (const Point& p : points) extent = std::max(extent, (p - mean).norm());
-
-  // Face planes from their polygons (Newell's normal, turned away from the points' mean, which is
-  // inside the convex cell), each moved out to the farthest cell point: the plane of a tiny face,
-  // whose normal rounding may tilt, then never cuts into the cell.
-  std::vector<quality::Plane> planes;
-  planes.reserve(cell.faces.size());
-  for (Index f : cell.faces) {
-    const std::vector<Index>& polygon = mesh.faces[f].points;
-    Point normal = Point::Zero(), centre = Point::Zero();
-    for (std::size_t k = 0; k < polygon.size(); ++k) {
-      const Point a = mesh.points[polygon[k]] - mean, b = mesh.points[polygon[(k + 1) % polygon.size()]] - mean;
-      normal += a.cross(b);
-      centre += a;
-    }
-    const double length = normal.norm();
-    if (!(length > 0)) continue;
-    normal /= length;
-    if (normal.dot(centre) < 0) normal = -normal;
-    double offset = -std::numeric_limits<double>::infinity();
-    for (const Point& p : points) offset = std::max(offset, normal.dot(p - mean));
-    planes.push_back({normal, offset + normal.dot(mean)});
-  }
-
-  const quality::Sphere outer = quality::smallest_enclosing_sphere(std::move(points));
-  const quality::Sphere inner =
-      extent > 0 ? quality::largest_inscribed_ball(planes, mean, extent) : quality::Sphere{mean, 0};
-  shape.circumcentre = outer.centre;
-  shape.circumradius = outer.radius;
-  shape.incentre = inner.centre;
-  shape.inradius = inner.radius;
-  shape.aspect_ratio = inner.radius > 0 ? outer.radius / inner.radius : std::numeric_limits<double>::infinity();
+  for (Index p : ids) points.push_back(mesh.points[p]);
+  const quality::CellSpheres spheres = quality::cell_spheres(
+      std::move(points), cell.faces.size(), [&](std::size_t f) { return mesh.faces[cell.faces[f]].points.size(); },
+      [&](std::size_t f, std::size_t k) -> const Point& { return mesh.points[mesh.faces[cell.faces[f]].points[k]]; });
+  shape.circumcentre = spheres.outer.centre;
+  shape.circumradius = spheres.outer.radius;
+  shape.incentre = spheres.inner.centre;
+  shape.inradius = spheres.inner.radius;
+  shape.aspect_ratio = spheres.aspect_ratio();
   shape.shortest_edge_relative = cell.volume > 0 ? shape.shortest_edge / std::cbrt(cell.volume) : 0;
   return shape;
 }

@@ -214,6 +214,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                 {"self_intersections", to_string(o.self_intersections)},
                 {"interior", to_string(o.interior)},
                 {"cvt_iterations", o.cvt_iterations},
+                {"max_aspect_ratio", o.max_aspect_ratio},
                 {"box", o.box ? json(*o.box) : json(nullptr)},
                 {"seed", o.seed},
                 {"threads", o.threads}}},
@@ -299,7 +300,10 @@ std::string run_report_json(const RunReport& report, int indent) {
                        {"cvt_iterations", i.cvt_iterations}, {"cvt_last_move", i.cvt_last_move},
                        {"cap_seeds", i.cap_seeds},           {"split_seeds", i.split_seeds},
                        {"repair_seeds", i.repair_seeds},
-                       {"repair_rounds", i.repair_rounds}};
+                       {"repair_rounds", i.repair_rounds},
+                       {"aspect_split_seeds", i.aspect_split_seeds},
+                       {"aspect_split_rounds", i.aspect_split_rounds},
+                       {"aspect_split_rounds_undone", i.aspect_split_rounds_undone}};
     doc["cells"] = cells_object(m.cells, m.cell_quality ? &*m.cell_quality : nullptr);
   }
   if (report.mesh && report.input && report.validation) {
