@@ -104,10 +104,11 @@ struct MeshOptions {
   int cvt_iterations = 20;  // Lloyd iterations of InteriorMode::Cvt
   // Cells whose aspect ratio (smallest enclosing sphere over largest inscribed ball) exceeds this
   // get a seed at their centroid, for at most 2 rounds (interior/cap_seeds.hpp,
-  // aspect_split_seeds); 0 splits none. 5, the paper's bound for its smooth model (4.86): on
-  // igl_bunny with `smooth` the worst cells are spindles from a ball's centre to deep inside,
-  // which no interior seed reaches within the balls' clearance. A cell thinner than the balls
-  // beside it cannot be split this way and keeps its shape.
+  // aspect_split_seeds); a round after which more faces stay highly skew is undone; 0 splits
+  // none. 5 by default, above the paper's 4.86 for its smooth model: on igl_bunny with `smooth`
+  // the worst cells are spindles from a ball's centre to deep inside, which no interior seed
+  // reaches within the balls' clearance. A cell thinner than the balls beside it cannot be split
+  // this way and keeps its shape.
   double max_aspect_ratio = kDefaultMaxAspectRatio;
   static constexpr double kDefaultMaxAspectRatio = 5, kLowestMaxAspectRatio = 3;
   Stage stop_after = Stage::Cells;
