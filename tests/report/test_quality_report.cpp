@@ -124,6 +124,26 @@ TEST(QualityReport, CellsRunReportStandsAloneOrJoinsAMeshRunsReport) {
   }
 }
 
+TEST(QualityReport, TimingsHoldOneEntryPerPhaseWithItsRuns) {
+  RunReport report;
+  report.status = "invalid geometry";
+  report.timings = {{"reading", 0.5},
+                    {"refinement: creases", 1},
+                    {"refinement: patches", 2},
+                    {"refinement: creases, pass 2", 0.25},
+                    {"refinement: patches, pass 2", 0.5},
+                    {"skew repair", 0.125},
+                    {"skew repair", 0.125}};
+  const nlohmann::json doc = nlohmann::json::parse(run_report_json(report));
+  const nlohmann::json expected = nlohmann::json::parse(R"([
+    {"phase": "reading", "seconds": 0.5, "runs": 1},
+    {"phase": "refinement: creases", "seconds": 1.25, "runs": 2},
+    {"phase": "refinement: patches", "seconds": 2.5, "runs": 2},
+    {"phase": "skew repair", "seconds": 0.25, "runs": 2}])");
+  EXPECT_EQ(doc["timings"], expected);
+  EXPECT_EQ(doc["total_seconds"].get<double>(), 4.5);
+}
+
 TEST(QualityReport, InputsComeBackFromReportJson) {
   const test::TempDir dir("report");
   write_file_atomically(dir / "report.json", R"({"status": "ok", "inputs": ["a.obj", "/models/b.off"]})");

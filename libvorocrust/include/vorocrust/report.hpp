@@ -31,6 +31,8 @@ struct RunReport {
   const MeshInfo* input = nullptr;
   const ValidationReport* validation = nullptr;
   const MeshResult* result = nullptr;  // null until the pipeline returned
+  // Every phase as it ran; "timings" in the report holds one {phase, seconds, runs} per phase, a
+  // refinement pass ("refinement: patches, pass 3") counted as a run of its phase.
   std::vector<PhaseTiming> timings;
   std::string status;   // "ok", or the failure class ("not yet implemented", "invalid geometry", ...)
   std::string message;  // one line; empty on success
@@ -70,7 +72,7 @@ struct CellsReport {
   std::size_t seeds = 0;
   const VoronoiMesh* mesh = nullptr;
   const CellQuality* quality = nullptr;
-  std::vector<PhaseTiming> timings;
+  std::vector<PhaseTiming> timings;  // as RunReport's
   std::string previous;  // the text of OUTDIR/report.json before the run; empty if none
 };
 

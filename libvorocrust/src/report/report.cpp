@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -168,12 +169,20 @@ json cells_object(const VoronoiMesh& mesh, const CellQuality* quality) {
   return doc;
 }
 
-// Timings as a list of {phase, seconds}, and their sum.
+// Timings as a list of {phase, seconds, runs}, one entry per phase in the order phases first ran,
+// and their sum. A phase that runs many times (the refinement's passes, "refinement: patches,
+// pass 12"; the skew repair's rounds) is one entry: a list of every run was hundreds long.
 std::pair<json, double> timings_object(const std::vector<PhaseTiming>& timings) {
   json list = json::array();
+  std::map<std::string, std::size_t, std::less<>> entry_of;
   double total = 0;
   for (const PhaseTiming& t : timings) {
-    list.push_back({{"phase", t.name}, {"seconds", t.seconds}});
+    const std::string phase = t.name.substr(0, t.name.find(", pass "));
+    const auto [at, fresh] = entry_of.try_emplace(phase, list.size());
+    if (fresh) list.push_back({{"phase", phase}, {"seconds", 0.0}, {"runs", 0}});
+    json& entry = list[at->second];
+    entry["seconds"] = entry["seconds"].get<double>() + t.seconds;
+    entry["runs"] = entry["runs"].get<int>() + 1;
     total += t.seconds;
   }
   return {list, total};
