@@ -127,5 +127,39 @@ TEST(AspectSplitSeeds, ACentroidInABallIsPushedOutOrTheCellKeepsItsShape) {
   EXPECT_TRUE(OneCell(Point(0.5, 0, 0.9), Point(0.5, 0, 1.1)).splits(cube).empty());
 }
 
+// A small skew face between two seeds of the inside just below a large ball, 1.02 of its radius
+// from its centre: pushed to 1.05 radii, a seed at the face would lie farther from it than its
+// seeds, and the ball's pole would keep it a tenth of the large radius away. The seed goes at the
+// face itself, just outside the sphere, spaced at the face's own scale (cgal_bones' last skew
+// faces).
+TEST(SkewRepairSeeds, AFaceBesideALargeBallGetsASeedJustOutsideIt) {
+  TopOfCube cube;
+  const std::uint32_t b = cube.ball(0);
+  const Point face_centroid(0, 0, 1 - 1.02 * kRadius);
+  const std::vector<Seed> seeds = {
+      Seed{face_centroid - Point(0.005, 0, 0), kInsideRegion, 0.004, SeedKind::Surface},
+      Seed{face_centroid + Point(0.005, 0, 0), kInsideRegion, 0.004, SeedKind::Surface}};
+  cells::CutFace face;
+  face.owner_seed = 0;
+  face.neighbour_seed = 1;
+  face.between_cells = true;
+  face.geometry.centroid = face_centroid;
+  face.geometry.normal = Point(1, 0, 0);
+  face.geometry.area = 1e-6;
+  face.owner_centroid = face_centroid - Point(0.004, 0, 0.001);
+  face.neighbour_centroid = face_centroid + Point(0.004, 0, -0.001);
+  const std::vector<Seed> pole = {Seed{Point(0, 0, 1 - kRadius), kInsideRegion, kRadius, SeedKind::Cap}};
+  const std::vector<Seed> added = skew_repair_seeds({face}, seeds, cube.balls, RegionLocator(cube.surface), pole);
+  ASSERT_EQ(added.size(), 1u);
+  EXPECT_EQ(added[0].position, face_centroid);
+  EXPECT_EQ(added[0].region, kInsideRegion);
+  EXPECT_EQ(added[0].kind, SeedKind::Repair);
+  EXPECT_GT((added[0].position - cube.balls[b].site.position).norm(), 1.005 * kRadius);
+  // A face of two materials is left alone.
+  std::vector<Seed> two = seeds;
+  two[1].region = 2;
+  EXPECT_TRUE(skew_repair_seeds({face}, two, cube.balls, RegionLocator(cube.surface), pole).empty());
+}
+
 }  // namespace
 }  // namespace vorocrust

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -26,7 +27,21 @@ constexpr double kSpacing = 0.1;
 // on that ball's sphere too: just outside a sphere, it would move the Voronoi vertex at the
 // ball's centre that the seeds on the sphere share off it, leaving a small skew face there.
 constexpr double kClearance = 1.05;
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kNoBall = static_cast<std::uint32_t>(-1);
+
+// How near the balls and the seeds placed a new seed may go.
+struct Room {
+  double clearance;  // outside every other ball, in its radius
+  // Apart from a seed placed by kSpacing of the smaller radius of the two, not of the placed
+  // seed's alone.
+  bool own_scale;
+};
+constexpr Room kRoom{kClearance, false};
+// Where kRoom leaves none, about a ball far larger than the seeds' own (cgal_bones, where small
+// balls of one bone crowd a large one of the next, whose clearance and whose pole's spacing
+// cover the whole gap), a repair seed may go just outside the spheres, spaced at its own scale.
+constexpr Room kTightRoom{1.005, true};
 // A skew face whose centroid lies this near a ball's centre, in radii, may take a seed on its
 // sphere this much nearer the seeds placed than kSpacing.
 constexpr double kNearCentre = 0.5;
@@ -37,7 +52,7 @@ constexpr double kPoleOffSeed = 1e-3;  // a pole nearer a seed than this, in rad
 // seeds on the sphere (igl_fertility: cells of aspect ratio 19 between seeds 0.03 radii apart);
 // at 1.3, as interior seeds do, it lies too deep to halve a spindle (igl_bunny --smooth --seed 1
 // keeps a cell of 5.18).
-constexpr double kSplitClearance = 1.15;
+constexpr Room kSplitRoom{1.15, false};
 // A split stays this far from every seed, in units of the distance from the centroid to the
 // cell's seed: nearer, the two cut a small face between them, which may stay highly skew
 // (openmeeg_HeadNNa1: splits 0.13 of that apart, where its sheets cross, left two faces of
@@ -103,16 +118,28 @@ class SphereSeeds {
 
   void remember(const Seed& s) { placed_.insert(s.position, kSpacing * s.radius, count_++); }
   // Whether p lies within `spacing` (a fraction of kSpacing) of the radius of a seed placed.
-  bool near_placed(const Point& p, double spacing = 1) const { return placed_.contains(p, spacing); }
+  // With `own_radius`, within `spacing` of that radius if it is the smaller.
+  bool near_placed(const Point& p, double spacing = 1, double own_radius = kUnbounded) const {
+    const double own = kSpacing * own_radius;
+    bool near = false;
+    placed_.search(
+        p, [&](double d2, double max_radius, std::uint32_t) { return !near && d2 < spacing * spacing * max_radius * max_radius; },
+        [&](const BallTree::Sphere& s) {
+          const double gap = spacing * std::min(s.radius, own);
+          near = near || (s.centre - p).squaredNorm() < gap * gap;
+        });
+    return near;
+  }
 
   // The seed of material `region` at direction u (unit) on ball b's sphere, if it may go there;
   // `spacing` scales the distance it keeps from the seeds placed.
-  std::optional<Seed> place(std::uint32_t b, const Point& u, std::int32_t region, double spacing = 1) {
+  std::optional<Seed> place(std::uint32_t b, const Point& u, std::int32_t region, double spacing = 1,
+                            const Room& room = kRoom) {
     const Point& centre = balls_[b].site.position;
     const double r = balls_[b].radius;
     const Point p = centre + r * u;
-    if (!clear_of_balls(p, b)) return std::nullopt;
-    if (near_placed(p, spacing)) return std::nullopt;
+    if (blocking_ball(p, b, room.clearance)) return std::nullopt;
+    if (near_placed(p, spacing, room.own_scale ? r : kUnbounded)) return std::nullopt;
     if (regions_.region_of(p, u) != region) return std::nullopt;
     Seed s{p, region, r, SeedKind::Cap};
     remember(s);
@@ -121,7 +148,8 @@ class SphereSeeds {
 
   // The seed at the free point of ball b's sphere farthest from `seeds` (directions from its
   // centre), of the spread directions.
-  std::optional<Seed> place_far_from(std::uint32_t b, const std::vector<Point>& seeds, std::int32_t region) {
+  std::optional<Seed> place_far_from(std::uint32_t b, const std::vector<Point>& seeds, std::int32_t region,
+                                    const Room& room = kRoom) {
     std::vector<std::pair<double, int>> order;
     for (int k = 0; k < static_cast<int>(kSpread.size()); ++k) {
       double nearest = 4;
@@ -130,26 +158,22 @@ class SphereSeeds {
     }
     std::sort(order.begin(), order.end());
     for (const auto& [score, k] : order) {
-      if (std::optional<Seed> s = place(b, kSpread[k], region)) return s;
+      if (std::optional<Seed> s = place(b, kSpread[k], region, 1, room)) return s;
     }
     return std::nullopt;
   }
 
-  // Whether p lies inside no ball but `own` (it would cut into the surface) and clear of their
-  // spheres but where it lies on one.
-  bool clear_of_balls(const Point& p, std::uint32_t own) { return !blocking_ball(p, own); }
-
-  // A seed of `region` at `target`, pushed out of the balls to `clearance` (pushed_clear), if it
-  // stays nearer the target than `from`, the seed of the cell it splits, is: pushed farther, it
-  // would take that seed's end of the cell instead. `direction`: the ray that finds its side;
+  // A seed of `region` at `target`, pushed out of the balls (pushed_clear), if it stays nearer
+  // the target than `from`, the seed of the cell it splits, is: pushed farther, it would take
+  // that seed's end of the cell instead. `direction`: the ray that finds its side;
   // `accept(p, reach)` may refuse the point p, `reach` being the distance from `from` to the target.
   template <class Accept>
   std::optional<Seed> place_split(const Point& target, const Point& from, std::int32_t region, const Point& direction,
-                                  double clearance, Accept&& accept) {
+                                  const Room& room, Accept&& accept) {
     const double reach = (target - from).norm();
-    const std::optional<Point> p = pushed_clear(target, clearance);
+    const std::optional<Point> p = pushed_clear(target, room.clearance);
     if (!p || !(reach > 0) || !((*p - target).norm() < reach) || regions_.region_of(*p, direction) != region ||
-        near_placed(*p) || !accept(*p, reach)) {
+        near_placed(*p, 1, room.own_scale ? reach : kUnbounded) || !accept(*p, reach)) {
       return std::nullopt;
     }
     Seed seed{*p, region, reach, SeedKind::Repair};
@@ -273,17 +297,16 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     }
     return out;
   };
-  for (const cells::CutFace& face : skew) {
-    if (!face.between_cells) continue;
+  // One face's repair with the room given; whether it placed a seed.
+  const auto repair = [&](const cells::CutFace& face, const Room& room) {
     const Seed &s = seeds[face.owner_seed], &t = seeds[static_cast<std::size_t>(face.neighbour_seed)];
     const std::int32_t region = s.region;
-    if (t.region != region) continue;
     const FaceGeometry& g = face.geometry;
     // A seed at `target`, pushed out of the balls near it, if it stays nearer the target than
     // `from` (a seed of the face) is: it takes the part of the cells about the target.
     const auto place_near = [&](const Point& target, const Point& from) {
       const std::optional<Seed> seed =
-          place.place_split(target, from, region, g.normal, kClearance, [](const Point&, double) { return true; });
+          place.place_split(target, from, region, g.normal, room, [](const Point&, double) { return true; });
       if (seed) added.push_back(*seed);
       return seed.has_value();
     };
@@ -296,7 +319,7 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     // Two seeds on spheres (poles, repairs) have cells squeezed between the balls; a seed on yet
     // another sphere makes one more such cell beside them (where openmeeg_HeadNNa1's south half
     // crosses its skull, rounds of them never ended), so these are split first.
-    if (s.kind == SeedKind::Cap && t.kind == SeedKind::Cap && split_farther()) continue;
+    if (s.kind == SeedKind::Cap && t.kind == SeedKind::Cap && split_farther()) return true;
     spheres_through(balls, s.position, s.radius, a);
     spheres_through(balls, t.position, t.radius, b);
     // A narrow wedge through the centre of a sphere both seeds lie on, between seeds there that
@@ -306,22 +329,19 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
     // other balls, as about a sphere whose seeds spread round it in arcs either side of a smaller
     // ball (and which then has no pole), a seed at the free point of the sphere farthest from
     // them replaces the wedge's neighbours by itself.
-    bool repaired = false;
     for (std::uint32_t q : a) {
       const Point& centre = balls[q].site.position;
       const double r = balls[q].radius;
       if (!std::binary_search(b.begin(), b.end(), q) || !((g.centroid - centre).norm() < kNearCentre * r)) continue;
       const Point towards = g.centroid - centre;
       std::optional<Seed> seed;
-      if (towards.norm() > 0) seed = place.place(q, towards.normalized(), region, kCloseSpacing);
-      if (!seed) seed = place.place_far_from(q, on_sphere(centre, r, region), region);
+      if (towards.norm() > 0) seed = place.place(q, towards.normalized(), region, kCloseSpacing, room);
+      if (!seed) seed = place.place_far_from(q, on_sphere(centre, r, region), region, room);
       if (seed) {
         added.push_back(*seed);
-        repaired = true;
-        break;
+        return true;
       }
     }
-    if (repaired) continue;
     // The spheres either seed lies on, those of both first (their centres lie on the face's
     // plane), nearest to the face first; the first that takes a seed toward the face.
     std::vector<std::pair<double, std::uint32_t>> candidates;
@@ -339,18 +359,21 @@ std::vector<Seed> skew_repair_seeds(const std::vector<cells::CutFace>& skew, con
       // A face near the centre is a sliver about it (a seed just off the sphere moved the shared
       // vertex there): it needs the seed toward it, however close the seeds already placed.
       const double spacing = towards.norm() < kNearCentre * balls[q].radius ? kCloseSpacing : 1;
-      if (const std::optional<Seed> seed = place.place(q, towards.normalized(), region, spacing)) {
+      if (const std::optional<Seed> seed = place.place(q, towards.normalized(), region, spacing, room)) {
         added.push_back(*seed);
-        repaired = true;
-        break;
+        return true;
       }
     }
-    if (repaired) continue;
     // No sphere takes one (a face between two seeds on no common sphere, often one a repair
     // seed): a seed at the face's centroid takes the small face's corner of both cells.
-    if (place_near(g.centroid, s.position)) continue;
+    if (place_near(g.centroid, s.position)) return true;
     // No seed may go near the face either (it lies inside a ball).
-    split_farther();
+    return split_farther();
+  };
+  for (const cells::CutFace& face : skew) {
+    if (!face.between_cells) continue;
+    if (seeds[face.owner_seed].region != seeds[static_cast<std::size_t>(face.neighbour_seed)].region) continue;
+    if (!repair(face, kRoom)) repair(face, kTightRoom);
   }
   return added;
 }
@@ -372,7 +395,7 @@ std::vector<Seed> aspect_split_seeds(const std::vector<cells::LongCell>& long_ce
   for (const cells::LongCell& cell : long_cells) {
     const Seed& own = seeds[cell.seed];
     if (const std::optional<Seed> seed = place.place_split(cell.centroid, own.position, own.region,
-                                                           cell.centroid - own.position, kSplitClearance, apart)) {
+                                                           cell.centroid - own.position, kSplitRoom, apart)) {
       splits.insert(seed->position, kSplitApart * seed->radius, static_cast<std::uint32_t>(added.size()));
       added.push_back(*seed);
     }

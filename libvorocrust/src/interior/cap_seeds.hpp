@@ -24,7 +24,10 @@
 //   seed, which splits it. Faces between two seeds on spheres are split first;
 // - aspect_split_seeds: a seed splitting each cell of too large an aspect ratio.
 // A seed is kept only where it lies in the material it is placed for (a ray to the surface says
-// so), inside no other ball, and clear of the seeds already placed this way.
+// so), inside no other ball, and clear of the seeds already placed this way. A skew face those
+// rules leave without a seed tries again with its seed allowed just outside the other balls and
+// spaced from those placed at its own scale: beside a ball far larger than the face's seeds, the
+// large ball's clearance and its pole's spacing can cover all the room there is.
 #pragma once
 
 #include <vector>
