@@ -64,27 +64,39 @@ LINK_ANGLE_DEGREES = 0.01
 BONES_LINK_ANGLE_DEGREES = 0.05
 
 
+def mesh_and_check(test, model, options, out, timeout):
+    """`vorocrust mesh MODEL` into folder `out`, and checkMesh on its case: "Mesh OK", no failed
+    check, and the report's non-orthogonality checkMesh's. Returns the report and checkMesh's
+    (max, mean) non-orthogonality."""
+    r = subprocess.run([BINARY, "mesh", os.path.join(MODELS, model), "-o", out, "-q", *options],
+                       capture_output=True, text=True, timeout=timeout)
+    test.assertEqual(r.returncode, 0, r.stderr)
+    with open(os.path.join(out, "report.json")) as f:
+        report = json.load(f)
+    quality = report["cells"]["quality"]
+    check, angles = check_mesh(os.path.join(out, "case"))
+    test.assertEqual(check.returncode, 0, check.stdout + check.stderr)
+    test.assertEqual([line for line in check.stdout.splitlines() if "***" in line], [])
+    test.assertIn("\nMesh OK.", check.stdout, check.stdout[-2500:])
+    test.assertAlmostEqual(quality["non_orthogonality"]["max"], angles[0], delta=1e-6 * angles[0])
+    test.assertAlmostEqual(quality["non_orthogonality"]["mean"], angles[1], delta=1e-6 * angles[1])
+    return report, angles
+
+
+def material_seeds(out):
+    """How many seeds of seeds.csv in folder `out` have a material, so a cell."""
+    with open(os.path.join(out, "seeds.csv")) as f:
+        return sum(1 for line in f.readlines()[1:] if line.split(",")[3] != "0")
+
+
 class VolumeMeshOfEachModel(unittest.TestCase):
     def test_each_model(self):
         for name, options in CASES:
             with self.subTest(model=name, options=options), tempfile.TemporaryDirectory() as out:
-                r = subprocess.run([BINARY, "mesh", os.path.join(MODELS, name), "-o", out, "-q", *options],
-                                   capture_output=True, text=True, timeout=1800)
-                self.assertEqual(r.returncode, 0, r.stderr)
-                with open(os.path.join(out, "report.json")) as f:
-                    report = json.load(f)
+                report, angles = mesh_and_check(self, name, options, out, 1800)
                 quality = report["cells"]["quality"]
-
-                check, angles = check_mesh(os.path.join(out, "case"))
-                self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
-                self.assertEqual([line for line in check.stdout.splitlines() if "***" in line], [])
-                self.assertIn("\nMesh OK.", check.stdout, check.stdout[-2500:])
-                self.assertAlmostEqual(quality["non_orthogonality"]["max"], angles[0], delta=1e-6 * angles[0])
-                self.assertAlmostEqual(quality["non_orthogonality"]["mean"], angles[1], delta=1e-6 * angles[1])
-
                 seeds = read_seed_positions(os.path.join(out, "seeds.csv"))
-                with open(os.path.join(out, "seeds.csv")) as f:
-                    material = sum(1 for line in f.readlines()[1:] if line.split(",")[3] != "0")
+                material = material_seeds(out)
                 grid = read_vtu(os.path.join(out, "mesh.vtu"))
                 self.assertEqual(grid.GetNumberOfCells(), material)
                 largest, shared = vtk_link_angles(grid, seeds)
@@ -123,21 +135,11 @@ class VolumeMeshOfEachModel(unittest.TestCase):
 class LargeModel(unittest.TestCase):
     def test_cgal_bones(self):
         with tempfile.TemporaryDirectory() as out:
-            r = subprocess.run([BINARY, "mesh", os.path.join(MODELS, "cgal_bones.off"), "-o", out, "-q",
-                                "--format", "openfoam"], capture_output=True, text=True, timeout=3600)
-            self.assertEqual(r.returncode, 0, r.stderr)
-            with open(os.path.join(out, "report.json")) as f:
-                report = json.load(f)
+            report, _ = mesh_and_check(self, "cgal_bones.off", ["--format", "openfoam"], out, 3600)
             quality = report["cells"]["quality"]
-            check, angles = check_mesh(os.path.join(out, "case"))
-            self.assertEqual(check.returncode, 0, check.stdout + check.stderr)
-            self.assertEqual([line for line in check.stdout.splitlines() if "***" in line], [])
-            self.assertIn("\nMesh OK.", check.stdout, check.stdout[-2500:])
             self.assertEqual(quality["skewness"]["highly_skew_faces"], 0)
-            self.assertAlmostEqual(quality["non_orthogonality"]["max"], angles[0], delta=1e-6 * angles[0])
             self.assertLess(quality["link_angle"]["max"], BONES_LINK_ANGLE_DEGREES)
-            with open(os.path.join(out, "seeds.csv")) as f:
-                material = sum(1 for line in f.readlines()[1:] if line.split(",")[3] != "0")
+            material = material_seeds(out)
             self.assertEqual(report["cells"]["cells"], material)
             inside = sum(region["volume"] for region in report["regions"] if region["label"] > 0)
             hausdorff = report["surface"]["quality"]["hausdorff"]["distance"]
