@@ -474,7 +474,16 @@ std::vector<std::size_t> near_degenerate(const std::vector<RawCell>& raw) {
 
 }  // namespace
 
-VoronoiMesh GrowingCells::mesh() const {
+VoronoiMesh GrowingCells::mesh() const& {
+  return assemble([this](std::size_t c) { return raw_[c]; });
+}
+
+VoronoiMesh GrowingCells::mesh() && {
+  return assemble([this](std::size_t c) { return std::move(raw_[c]); });
+}
+
+template <class Cell>
+VoronoiMesh GrowingCells::assemble(Cell&& cell) const {
   VoronoiMesh mesh;
   in_arena([&] {
     const Frame& frame = frame_;
@@ -489,7 +498,7 @@ VoronoiMesh GrowingCells::mesh() const {
     std::vector<Index> cell_seeds(raw_.size());
     std::vector<std::int32_t> cell_of_seed(cell_of_seed_.size(), kNoCell);
     tbb::parallel_for(std::size_t{0}, along.size(), [&](std::size_t i) {
-      raw[i] = raw_[along[i]];
+      raw[i] = cell(along[i]);
       cell_seeds[i] = cell_seeds_[along[i]];
       cell_of_seed[cell_seeds[i]] = static_cast<std::int32_t>(i);
     });

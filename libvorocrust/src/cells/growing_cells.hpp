@@ -47,7 +47,10 @@ class GrowingCells {
  public:
   GrowingCells(const std::vector<Seed>& seeds, const CellsOptions& options);
   void add_seeds(const std::vector<Seed>& seeds);
-  VoronoiMesh mesh() const;
+  // The cells welded and assembled. On a GrowingCells about to go (an rvalue), its cells as cut
+  // move into the assembly instead of being copied: the object is spent after.
+  VoronoiMesh mesh() const&;
+  VoronoiMesh mesh() &&;
   // The faces whose skewness exceeds `threshold`, each once, in the order of their lower cell.
   // Measured again only for the cells cut since the last call and their neighbours (a face's
   // skewness needs both centroids); the same faces as measuring every cell.
@@ -58,6 +61,9 @@ class GrowingCells {
   std::vector<LongCell> long_cells(double bound);
 
  private:
+  // The mesh of the cells `cell(c)` gives for cell c, a copy of raw_[c] or raw_[c] itself.
+  template <class Cell>
+  VoronoiMesh assemble(Cell&& cell) const;
   void add_cell(std::size_t seed);
   void cut_all();
   template <class Work>

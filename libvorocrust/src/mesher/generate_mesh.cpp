@@ -327,7 +327,7 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
   }
   // The cells welded and assembled once, for the seeds as they stand.
   if (progress && !progress({"assembly", -1})) throw Error(Error::Kind::Cancelled, "cancelled");
-  result.cells = clock("assembly", [&] { return cells->mesh(); });
+  result.cells = clock("assembly", [&] { return std::move(*cells).mesh(); });
   for (const Seed& s : result.seeds) {
     if (s.kind == SeedKind::Outside) ++result.interior.outside_seeds;
     if (s.kind == SeedKind::Interior) ++result.interior.interior_seeds;
