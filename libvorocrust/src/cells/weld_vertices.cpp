@@ -73,15 +73,13 @@ void unite_across_faces(const std::vector<RawCell>& cells, const std::vector<Ind
   }
 }
 
-// Unites the remaining distinct points within tolerance of each other: sorted by x, each is
-// compared with those following it within the largest tolerance.
+// Unites in `sets` every two points within the larger of their tolerances of each other: sorted
+// by x, each is compared with those following it within the largest tolerance.
 void unite_close_points(const std::vector<Point>& position, const std::vector<double>& tol, UnionFind& sets) {
   // Sorted as (x, index) pairs by value: a comparison that looks the points up scatters over
   // millions of them and took a tenth of the cells stage.
-  std::vector<std::pair<double, std::uint32_t>> roots;
-  for (std::uint32_t i = 0; i < position.size(); ++i) {
-    if (sets.find(i) == i) roots.emplace_back(position[i].x(), i);
-  }
+  std::vector<std::pair<double, std::uint32_t>> roots(position.size());
+  for (std::uint32_t i = 0; i < position.size(); ++i) roots[i] = {position[i].x(), i};
   tbb::parallel_sort(roots.begin(), roots.end());
   double reach = 0;
   for (const auto& [x, r] : roots) reach = std::max(reach, tol[r]);
@@ -125,17 +123,11 @@ Point circumcentre(const Index* generators, std::size_t count, const std::vector
 // ball's centre) are distinct points, yet their circumcentres fit the same seeds and can land
 // within round-off of each other, which would leave faces of no area (checkMesh: "incorrectly
 // oriented"). Placed points within tolerance of each other become one as well, the lowest.
-void merge_coincident_points(WeldedVertices& w, const std::vector<std::uint32_t>& root, const std::vector<double>& tol,
-                             const Frame& frame) {
+// `point_tol`: per point, its tolerance.
+void merge_coincident_points(WeldedVertices& w, const std::vector<double>& point_tol, const Frame& frame) {
   const std::size_t n = w.points.size();
   std::vector<Point> placed(n);
-  std::vector<double> point_tol(n, 0);
-  for (std::size_t i = 0; i < root.size(); ++i) {
-    if (root[i] != i) continue;
-    const Index p = w.point_of[i];
-    placed[p] = (w.points[p] - frame.centre) / frame.scale;
-    point_tol[p] = tol[i];
-  }
+  for (std::size_t p = 0; p < n; ++p) placed[p] = (w.points[p] - frame.centre) / frame.scale;
   UnionFind sets(n);
   unite_close_points(placed, point_tol, sets);
   std::vector<Index> label(n, 0);
@@ -163,29 +155,41 @@ WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vecto
   for (std::size_t c = 0; c < cells.size(); ++c) w.first_instance[c + 1] = w.first_instance[c] + cells[c].vertices.size();
   const std::size_t instances = w.first_instance.back();
 
-  std::vector<Point> position(instances);
-  std::vector<double> tol(instances);
-  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
-    const Point& seed = frame.normalized[cell_seeds[c]];
-    for (std::size_t v = 0; v < cells[c].vertices.size(); ++v) {
-      position[w.first_instance[c] + v] = cells[c].vertices[v];
-      tol[w.first_instance[c] + v] = weld_tolerance(cells[c].vertices[v], seed, relative_tolerance[c]);
-    }
-  });
-
   UnionFind sets(instances);
   tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
     unite_across_faces(cells, cell_seeds, cell_of_seed, frame, w.first_instance, relative_tolerance, sets, c);
   });
-  unite_close_points(position, tol, sets);
+  // The instances still apart (their set's root, its lowest), in order: their positions and
+  // tolerances, and the sweep's unions among them. Only these: the arrays of every instance were
+  // four times as long, and filling them cost page faults on every run.
+  std::vector<std::uint32_t> apart;
+  std::vector<Point> position;
+  std::vector<double> tol;
+  for (std::size_t c = 0; c < cells.size(); ++c) {
+    const Point& seed = frame.normalized[cell_seeds[c]];
+    for (std::size_t v = 0; v < cells[c].vertices.size(); ++v) {
+      const auto i = static_cast<std::uint32_t>(w.first_instance[c] + v);
+      if (sets.find(i) != i) continue;
+      apart.push_back(i);
+      position.push_back(cells[c].vertices[v]);
+      tol.push_back(weld_tolerance(cells[c].vertices[v], seed, relative_tolerance[c]));
+    }
+  }
+  UnionFind close(apart.size());
+  unite_close_points(position, tol, close);
+  for (std::uint32_t k = 0; k < apart.size(); ++k) sets.unite(apart[k], apart[close.find(k)]);
 
   // Points numbered by their first instance, which is their set's root.
   std::vector<std::uint32_t> root(instances);
   tbb::parallel_for(std::size_t{0}, instances, [&](std::size_t i) { root[i] = sets.find(static_cast<std::uint32_t>(i)); });
+  // A root lies among those apart (an instance united with a lower one across a face is none).
   std::vector<Index> label(instances, 0);
+  std::vector<double> point_tol;  // per point, its root's tolerance
   Index points = 0;
-  for (std::size_t i = 0; i < instances; ++i) {
-    if (root[i] == i) label[i] = points++;
+  for (std::size_t k = 0; k < apart.size(); ++k) {
+    if (root[apart[k]] != apart[k]) continue;
+    label[apart[k]] = points++;
+    point_tol.push_back(tol[k]);
   }
   w.point_of.resize(instances);
   tbb::parallel_for(std::size_t{0}, instances, [&](std::size_t i) { w.point_of[i] = label[root[i]]; });
@@ -210,10 +214,10 @@ WeldedVertices weld_vertices(const std::vector<RawCell>& cells, const std::vecto
       if (root[i] != i) continue;
       const Point at = frame.centre + frame.scale * cell.vertices[v];
       w.points[label[i]] = circumcentre(around.data() + start[v], start[v + 1] - start[v], frame.original, at,
-                                        10 * tol[i] * frame.scale);
+                                        10 * point_tol[label[i]] * frame.scale);
     }
   });
-  merge_coincident_points(w, root, tol, frame);
+  merge_coincident_points(w, point_tol, frame);
   return w;
 }
 
