@@ -125,8 +125,9 @@ class SphereSeeds {
     placed_.search(
         p, [&](double d2, double max_radius, std::uint32_t) { return !near && d2 < spacing * spacing * max_radius * max_radius; },
         [&](const BallTree::Sphere& s) {
-          const double gap = spacing * std::min(s.radius, own);
-          near = near || (s.centre - p).squaredNorm() < gap * gap;
+          // Rounded as the pruning above rounds: an unbounded own radius is BallTree::contains.
+          const double r = std::min(s.radius, own);
+          near = near || (s.centre - p).squaredNorm() < spacing * spacing * r * r;
         });
     return near;
   }
