@@ -72,6 +72,11 @@ int main(int argc, char** argv) {
   mesh_cmd->add_option_function<int>(
       "--smoothing-iterations", [&](int rounds) { mesh.options.smoothing_iterations = rounds; },
       "Rounds of adaptive Loop subdivision inside smooth patches before refinement; default 0, or 6 with --smooth");
+  mesh_cmd->add_option("--smoothing-tolerance", mesh.options.smoothing_tolerance,
+                       "How far smoothing may move the surface, as a fraction of the input's bounding-box diagonal: "
+                       "faces around a vertex Loop's rules would move farther are first split at their midpoints "
+                       "(at most twice); 0: Loop's rules alone")
+      ->capture_default_str();
   mesh_cmd->add_option_function<double>(
       "--min-triangle-angle", [&](double degrees) { mesh.options.min_triangle_angle_degrees = degrees; },
       "Split surface triangles away from features with an angle below this (degrees, 0 to 30; 0: none) by "

@@ -225,6 +225,7 @@ the same document as the CLI's OUTDIR/report.json.
     d["smoothing_iterations"] = defaults.smoothing_rounds();
     d["smooth_sharp_angle"] = MeshOptions::kSmoothSharpAngleDegrees;
     d["smooth_smoothing_iterations"] = MeshOptions::kSmoothSmoothingIterations;
+    d["smoothing_tolerance"] = defaults.smoothing_tolerance;
     d["min_triangle_angle"] = defaults.min_triangle_angle();
     d["smooth_min_triangle_angle"] = MeshOptions::kSmoothMinTriangleAngleDegrees;
     d["interior"] = to_string(defaults.interior);
@@ -240,6 +241,7 @@ the same document as the CLI's OUTDIR/report.json.
       "_mesh",
       [](const py::object& model, double lipschitz, bool smooth, const std::optional<double>& sharp_angle,
          const py::object& max_size, const py::object& sizing, const std::optional<int>& smoothing_iterations,
+         double smoothing_tolerance,
          const std::optional<double>& min_triangle_angle, const std::string& interior, int cvt_iterations,
          double max_aspect_ratio, const std::string& stop_after, std::uint64_t seed, int threads, const std::string& self_intersections,
          const std::optional<std::array<double, 6>>& box, const py::object& progress) {
@@ -250,6 +252,7 @@ the same document as the CLI's OUTDIR/report.json.
         options.max_size = max_size.is_none() ? std::numeric_limits<double>::infinity() : max_size.cast<double>();
         if (!sizing.is_none()) options.sizing_file = to_path(sizing);
         options.smoothing_iterations = smoothing_iterations;
+        options.smoothing_tolerance = smoothing_tolerance;
         options.min_triangle_angle_degrees = min_triangle_angle;
         options.interior = interior_named(interior);
         options.cvt_iterations = cvt_iterations;
@@ -263,7 +266,7 @@ the same document as the CLI's OUTDIR/report.json.
       },
       py::arg("model"), py::arg("lipschitz"), py::arg("smooth"), py::arg("sharp_angle"), py::arg("max_size"),
       py::arg("sizing"),
-      py::arg("smoothing_iterations"), py::arg("min_triangle_angle"), py::arg("interior"), py::arg("cvt_iterations"),
+      py::arg("smoothing_iterations"), py::arg("smoothing_tolerance"), py::arg("min_triangle_angle"), py::arg("interior"), py::arg("cvt_iterations"),
       py::arg("max_aspect_ratio"), py::arg("stop_after"),
       py::arg("seed"), py::arg("threads"), py::arg("self_intersections"), py::arg("box"), py::arg("progress"),
       "The pipeline behind vorocrust.mesh(), which documents the arguments.");

@@ -82,7 +82,8 @@ OUTPUT_FORMATS = {
 
 
 def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTIONS["smooth"], sharp_angle=None,
-         max_size=None, sizing=None, smoothing_iterations=None, min_triangle_angle=None,
+         max_size=None, sizing=None, smoothing_iterations=None,
+         smoothing_tolerance=DEFAULT_OPTIONS["smoothing_tolerance"], min_triangle_angle=None,
          interior=DEFAULT_OPTIONS["interior"], cvt_iterations=DEFAULT_OPTIONS["cvt_iterations"],
          max_aspect_ratio=DEFAULT_OPTIONS["max_aspect_ratio"], stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
          self_intersections=DEFAULT_OPTIONS["self_intersections"], box=None, progress=None):
@@ -100,6 +101,10 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTION
     sizing: a sizing file of lines "x y z size", interpolated (--sizing).
     smoothing_iterations: rounds of adaptive Loop subdivision inside smooth patches; None: none,
         or DEFAULT_OPTIONS["smooth_smoothing_iterations"] when smooth.
+    smoothing_tolerance: how far smoothing may move the surface, as a fraction of the input's
+        bounding-box diagonal: the faces around a vertex that Loop's rules would move farther are
+        first split at their edge midpoints, at most twice; 0 for Loop's rules alone
+        (--smoothing-tolerance).
     min_triangle_angle: surface triangles away from features with an angle below this many
         degrees (0 to 30) are split by shrinking the balls that cover their circumcentres
         (--min-triangle-angle); None: DEFAULT_OPTIONS["min_triangle_angle"] (0, none), or
@@ -136,6 +141,7 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTION
         sharp_angle=None if sharp_angle is None else float(sharp_angle),
         max_size=None if max_size is None or math.isinf(max_size) else float(max_size), sizing=sizing,
         smoothing_iterations=None if smoothing_iterations is None else int(smoothing_iterations),
+        smoothing_tolerance=float(smoothing_tolerance),
         min_triangle_angle=None if min_triangle_angle is None else float(min_triangle_angle),
         interior=interior,
         cvt_iterations=int(cvt_iterations), max_aspect_ratio=float(max_aspect_ratio), stop_after=stop_after, seed=int(seed), threads=int(threads),

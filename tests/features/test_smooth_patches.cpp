@@ -11,9 +11,12 @@
 #include <set>
 
 #include "core/edge_topology.hpp"
+#include "core/surface_measures.hpp"
 #include "features/smooth_patches.hpp"
 #include "features/strata.hpp"
 #include "test_support.hpp"
+#include "vorocrust/mesher.hpp"
+#include "vorocrust/quality.hpp"
 #include "vorocrust/read_mesh.hpp"
 #include "vorocrust/validate.hpp"
 
@@ -29,11 +32,12 @@ struct Smoothing {
   double seconds = 0;
 };
 
-Smoothing smooth_model(const std::string& model, const SmoothingOptions& options = {}, double sharp_degrees = 30) {
+Smoothing smooth_model(const std::string& model, const SmoothingOptions& options = {}, double sharp_degrees = 30,
+                       FeatureDetection detection = FeatureDetection::SharpAndBoundary) {
   Smoothing run;
   run.input = read_mesh(test::model(model));
   (void)validate(run.input);
-  run.strata = detect_strata(run.input, sharp_degrees * kDegree);
+  run.strata = detect_strata(run.input, sharp_degrees * kDegree, detection);
   const auto start = std::chrono::steady_clock::now();
   run.out = smooth_patches(run.input, run.strata, options);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -445,6 +449,56 @@ TEST(SmoothPatches, TorusShrinksOnlySlightly) {
   EXPECT_GT(v0, 0);
   EXPECT_LT(std::abs(v1 - v0), 0.03 * v0);
   EXPECT_EQ(topology_of(run.out.mesh).euler, std::vector<long>{0});
+}
+
+// The smooth surface a --smooth run covers (its input in the mesher's domain: directional_bimba
+// crosses itself in three places), with or without a bound on how far Loop's rules may move it
+// (a fraction of the diagonal).
+Smoothing smooth_surface_of(const std::string& model, double tolerance) {
+  Smoothing run;
+  SurfaceMesh input = read_mesh(test::model(model));
+  (void)validate(input);
+  MeshOptions mode;
+  mode.smooth = true;
+  run.input = prepare_domain(input, mode);
+  run.strata = detect_strata(run.input, mode.sharp_angle() * kDegree, FeatureDetection::BoundaryOnly);
+  SmoothingOptions options;
+  options.max_deviation = tolerance * bounding_box_diagonal(run.input);
+  run.out = smooth_patches(run.input, run.strata, options);
+  return run;
+}
+
+TEST(SmoothPatches, BoundingRoundsKeepACoarseBentSurfaceNearItsInput) {
+  // directional_bimba: 697 vertices, folds of up to 129 degrees. Loop's rules alone shrink it
+  // 1.4 % of its diagonal away from its input; split first where they would move a vertex more
+  // than 0.75 %, it ends within 1 %.
+  const Smoothing plain = smooth_surface_of("directional_bimba.off", 0);
+  const Smoothing bounded = smooth_surface_of("directional_bimba.off", 0.0075);
+  print("directional_bimba.off, Loop's rules alone", plain);
+  print("directional_bimba.off, bounded", bounded);
+  expect_invariants(bounded);
+  EXPECT_EQ(plain.out.bounding_rounds, 0);
+  EXPECT_GE(bounded.out.bounding_rounds, 1);
+  EXPECT_LE(bounded.out.bounding_rounds, SmoothingOptions{}.max_bounding_rounds);
+  EXPECT_EQ(bounded.out.iterations, plain.out.iterations);
+  // No fold of the input survives as one: none of its edges bends past the sharp angle.
+  EXPECT_LT(patch_bend(bounded.out.mesh, strata_after_smoothing(bounded.out)).max, 60);
+  const double before = measure_surface_quality(plain.input, plain.out.mesh).hausdorff_relative;
+  const double after = measure_surface_quality(bounded.input, bounded.out.mesh).hausdorff_relative;
+  std::printf("[smooth] directional_bimba.off Hausdorff %.3f %% -> %.3f %% of the diagonal\n", 100 * before, 100 * after);
+  EXPECT_GT(before, 0.012);
+  EXPECT_LT(after, 0.01);
+  EXPECT_EQ(topology_of(bounded.out.mesh).euler, topology_of(bounded.input).euler);
+}
+
+TEST(SmoothPatches, BoundingRoundsLeaveAFineTessellationAlone) {
+  // sandia_torus's 4 608 vertices bend it little each: Loop's rules move none by 0.75 %, so the
+  // bound splits nothing and the smoothing is Loop's alone, vertex for vertex.
+  const Smoothing plain = smooth_surface_of("sandia_torus.obj", 0);
+  const Smoothing bounded = smooth_surface_of("sandia_torus.obj", 0.0075);
+  EXPECT_EQ(bounded.out.bounding_rounds, 0);
+  EXPECT_EQ(bounded.out.mesh.triangles, plain.out.mesh.triangles);
+  EXPECT_EQ(bounded.out.mesh.vertices, plain.out.mesh.vertices);
 }
 
 TEST(SmoothPatches, NonManifoldBoxKeepsItsWallsAndFaces) {

@@ -221,6 +221,8 @@ class Module(unittest.TestCase):
         self.assertEqual(vorocrust.DEFAULT_OPTIONS["min_triangle_angle"], 0)
         self.assertEqual(vorocrust.DEFAULT_OPTIONS["smooth_min_triangle_angle"], 30)
         self.assertTrue(report["options"]["smooth"])
+        self.assertEqual(report["options"]["smoothing_tolerance"], vorocrust.DEFAULT_OPTIONS["smoothing_tolerance"])
+        self.assertGreaterEqual(report["features"]["smoothing_bounding_rounds"], 1)  # a coarse mesh, strongly bent
         self.assertEqual(report["features"]["corners"], 0)  # 397 by the default rules
         self.assertEqual(report["features"]["smoothing_iterations"], 6)
         vorocrust.write_balls(result.balls, os.path.join(out, "module_balls.csv"))
@@ -240,6 +242,8 @@ class Module(unittest.TestCase):
         self.assertEqual(kept["slivers"]["skinny_triangle_rounds"], 0)
         with self.assertRaises(vorocrust.UsageError):
             vorocrust.mesh(bird, smooth=True, min_triangle_angle=31, stop_after="surface")
+        with self.assertRaises(vorocrust.UsageError):
+            vorocrust.mesh(bird, smooth=True, smoothing_tolerance=-0.01, stop_after="balls")
         # Features are found after smoothing: with none, the folds of the coarse mesh are creases,
         # as by the default rules, and the refinement ends as it does with them.
         unsmoothed = vorocrust.mesh(bimba, smooth=True, smoothing_iterations=0, stop_after="balls").report()

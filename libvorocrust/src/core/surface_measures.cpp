@@ -18,6 +18,14 @@ double surface_area(const SurfaceMesh& mesh, const std::vector<Index>& faces) {
   return area;
 }
 
+double bounding_box_diagonal(const SurfaceMesh& mesh) {
+  Eigen::AlignedBox3d box;
+  for (const Triangle& t : mesh.triangles) {
+    for (Index v : t) box.extend(mesh.vertices[v]);
+  }
+  return box.isEmpty() ? 0 : box.diagonal().norm();
+}
+
 double enclosed_volume(const SurfaceMesh& mesh, const std::vector<Index>& faces) {
   if (faces.empty()) return 0;
   const Point origin = mesh.vertices[mesh.triangles[faces.front()][0]];

@@ -11,6 +11,10 @@ double face_area(const SurfaceMesh& mesh, Index face);
 Point face_centroid(const SurfaceMesh& mesh, Index face);
 double surface_area(const SurfaceMesh& mesh, const std::vector<Index>& faces);
 
+// The diagonal of the bounding box of the vertices the faces use: the unit of the surface
+// quality's distances, and of how far smoothing may move the surface.
+double bounding_box_diagonal(const SurfaceMesh& mesh);
+
 // Signed volume bounded by `faces` (positive when their normals point outward); meaningful for
 // a closed shell. Tetrahedra are taken from the shell's first vertex to keep the sum well
 // conditioned far from the origin.

@@ -170,10 +170,128 @@ class FixedEnds {
 
 enum class Split : std::uint8_t { None, Green, Red };
 
-// One round of adaptive Loop subdivision. Returns the number of faces of the current mesh that
-// were replaced, or 0 when nothing is marked or the round would exceed options.max_faces (the
-// mesh is then left as it was).
-std::size_t refine_once(Refinement& r, const SmoothingOptions& options) {
+// How a round places its points and which faces it splits.
+enum class Rule : std::uint8_t {
+  Loop,    // Loop's rules, on faces whose patch still bends
+  Linear,  // edge midpoints and nothing moved, on faces whose patch Loop would move too far
+};
+
+// The faces a Loop round splits: those with a non-sharp edge bent by more than
+// pi - flat_dihedral, not flat yet.
+std::vector<bool> bent_faces(const Refinement& r, const EdgeTopology& topo, const std::vector<bool>& sharp,
+                             const SmoothingOptions& options) {
+  const SurfaceMesh& mesh = r.mesh;
+  std::vector<Point> normal(mesh.num_faces());
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) normal[f] = unit_normal(mesh.vertices, mesh.triangles[f]);
+  const double cos_bend = std::cos(std::numbers::pi - options.flat_dihedral_degrees * std::numbers::pi / 180);
+  std::vector<bool> marked(mesh.num_faces(), false);
+  for (std::size_t e = 0; e < topo.num_edges(); ++e) {
+    if (sharp[e]) continue;
+    const auto faces = topo.faces_of(e);
+    // A zero-area face has no normal to compare; it is split only when its neighbours force it.
+    if (normal[faces[0]].isZero() || normal[faces[1]].isZero()) continue;
+    if (bend_cos(mesh.triangles, normal, topo, e) < cos_bend) marked[faces[0]] = marked[faces[1]] = true;
+  }
+  return marked;
+}
+
+// The faces a Linear round splits: those with a vertex that Loop's rules, carried to their limit,
+// would move across the surface by more than options.max_deviation. Loop's limit point of a
+// vertex v of valence n is v + n chi (mean of its neighbours - v), chi = 1 / (n + 3 / (8 beta))
+// (Loop 1987); its component along v's normal is how far the smooth surface leaves the input at
+// v (the tangential part only slides along it). A midpoint split halves the mean's offset, so
+// where the input's tessellation is coarse for how much it bends, the smooth surface comes
+// closer to it.
+std::vector<bool> straying_faces(const Refinement& r, const EdgeTopology& topo, const SmoothingOptions& options) {
+  const SurfaceMesh& mesh = r.mesh;
+  const std::vector<Point>& p = mesh.vertices;
+  std::vector<Point> neighbour_sum(p.size(), Point::Zero()), normal(p.size(), Point::Zero());
+  std::vector<std::size_t> valence(p.size(), 0);
+  for (const auto& [a, b] : topo.edges) {
+    neighbour_sum[a] += p[b], ++valence[a];
+    neighbour_sum[b] += p[a], ++valence[b];
+  }
+  for (const Triangle& t : mesh.triangles) {
+    const Point n = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);  // area-weighted
+    for (Index v : t) normal[v] += n;
+  }
+  std::vector<bool> strays(p.size(), false);
+  for (Index v = 0; v < p.size(); ++v) {
+    if (r.fixed[v] || valence[v] == 0 || normal[v].isZero()) continue;
+    const auto n = static_cast<double>(valence[v]);
+    const double chi = 1 / (n + 3 / (8 * loop_beta(valence[v])));
+    const Point offset = n * chi * (neighbour_sum[v] / n - p[v]);
+    strays[v] = std::abs(offset.dot(normal[v].normalized())) > options.max_deviation;
+  }
+  std::vector<bool> marked(mesh.num_faces(), false);
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    marked[f] = strays[t[0]] || strays[t[1]] || strays[t[2]];
+  }
+  return marked;
+}
+
+// The kink guard, after a Loop round. Loop's stencils presume a smooth, even neighbourhood; on
+// skinny or folded input faces, or next to vertices held still, they can pull a point across its
+// neighbours and fold or spike the surface. Wherever a non-sharp edge ends up bent more than the input's worst
+// patch edge (or a face has no area), the vertices of its two faces fall back to linear
+// subdivision (midpoints, old vertices in place), which only repeats bends that were there.
+// Vertices only ever fall back, so this ends.
+void guard_kinks(const Refinement& r, const std::vector<Point>& linear, SurfaceMesh& out) {
+  const EdgeTopology out_topo = build_edge_topology(out);
+  std::vector<Point>& placed = out.vertices;
+  std::vector<Point> out_normal(out.num_faces());
+  for (std::size_t g = 0; g < out.num_faces(); ++g) out_normal[g] = unit_normal(placed, out.triangles[g]);
+  std::vector<bool> guarded(out_topo.num_edges(), false);
+  for (std::size_t e = 0; e < out_topo.num_edges(); ++e) {
+    guarded[e] = out_topo.valence(e) == 2 && !r.sharp.contains(edge_key(out_topo.edges[e][0], out_topo.edges[e][1]));
+  }
+  std::vector<std::size_t> face_offset(out.num_vertices() + 1, 0);  // faces around each vertex
+  for (const Triangle& t : out.triangles) {
+    for (Index v : t) ++face_offset[v + 1];
+  }
+  std::partial_sum(face_offset.begin(), face_offset.end(), face_offset.begin());
+  std::vector<Index> faces_at(face_offset.back());
+  {
+    std::vector<std::size_t> fill(face_offset.begin(), face_offset.end() - 1);
+    for (Index g = 0; g < out.num_faces(); ++g) {
+      for (Index v : out.triangles[g]) faces_at[fill[v]++] = g;
+    }
+  }
+  std::vector<Index> dirty(out.num_faces());
+  std::iota(dirty.begin(), dirty.end(), Index{0});
+  std::vector<bool> queued(out.num_faces(), false);
+  while (!dirty.empty()) {
+    std::vector<Index> next;
+    for (Index g : dirty) {
+      for (Index e : out_topo.face_edges[g]) {
+        if (!guarded[e]) continue;
+        const auto faces = out_topo.faces_of(e);
+        const bool flat_enough = !out_normal[faces[0]].isZero() && !out_normal[faces[1]].isZero() &&
+                                 bend_cos(out.triangles, out_normal, out_topo, e) >= r.cos_kink;
+        if (flat_enough) continue;
+        for (Index h : faces) {
+          for (Index v : out.triangles[h]) {
+            if (placed[v] == linear[v]) continue;
+            placed[v] = linear[v];
+            for (std::size_t i = face_offset[v]; i < face_offset[v + 1]; ++i) {
+              const Index k = faces_at[i];
+              out_normal[k] = unit_normal(placed, out.triangles[k]);
+              if (!queued[k]) queued[k] = true, next.push_back(k);
+            }
+          }
+        }
+      }
+    }
+    for (Index g : next) queued[g] = false;
+    dirty = std::move(next);
+  }
+}
+
+// One round of adaptive subdivision by `rule`. Returns the number of faces of the current mesh
+// that were replaced, or 0 when nothing is marked or the round would exceed options.max_faces
+// (the mesh is then left as it was).
+std::size_t refine_once(Refinement& r, const SmoothingOptions& options, Rule rule) {
   const SurfaceMesh& mesh = r.mesh;
   const EdgeTopology topo = build_edge_topology(mesh);
   const std::size_t num_faces = mesh.num_faces(), num_edges = topo.num_edges();
@@ -184,23 +302,9 @@ std::size_t refine_once(Refinement& r, const SmoothingOptions& options) {
     sharp[e] = topo.valence(e) != 2 || r.sharp.contains(edge_key(topo.edges[e][0], topo.edges[e][1]));
   }
 
-  // Marking: a face with a non-sharp edge bent by more than pi - flat_dihedral is not flat yet.
-  std::vector<Point> normal(num_faces);
-  for (std::size_t f = 0; f < num_faces; ++f) normal[f] = unit_normal(old, mesh.triangles[f]);
-  const double cos_bend = std::cos(std::numbers::pi - options.flat_dihedral_degrees * std::numbers::pi / 180);
-  std::vector<bool> marked(num_faces, false);
-  bool any_marked = false;
-  for (std::size_t e = 0; e < num_edges; ++e) {
-    if (sharp[e]) continue;
-    const auto faces = topo.faces_of(e);
-    // A zero-area face has no normal to compare; it is split only when its neighbours force it.
-    if (normal[faces[0]].isZero() || normal[faces[1]].isZero()) continue;
-    if (bend_cos(mesh.triangles, normal, topo, e) < cos_bend) {
-      marked[faces[0]] = marked[faces[1]] = true;
-      any_marked = true;
-    }
-  }
-  if (!any_marked) return 0;
+  const std::vector<bool> marked =
+      rule == Rule::Loop ? bent_faces(r, topo, sharp, options) : straying_faces(r, topo, options);
+  if (std::find(marked.begin(), marked.end(), true) == marked.end()) return 0;
 
   // Red-green closure, to a fixed point: splitting an edge revisits the faces around it.
   std::vector<bool> split_edge(num_edges, false);
@@ -278,7 +382,7 @@ std::size_t refine_once(Refinement& r, const SmoothingOptions& options) {
     const Point midpoint = 0.5 * (old[a] + old[b]);
     linear.push_back(midpoint);
     // Creases keep their straight edges exactly; cone points keep their cones.
-    if (sharp[e] || ends.cone(a) || ends.cone(b)) {
+    if (rule == Rule::Linear || sharp[e] || ends.cone(a) || ends.cone(b)) {
       points.push_back(midpoint);
       continue;
     }
@@ -312,7 +416,7 @@ std::size_t refine_once(Refinement& r, const SmoothingOptions& options) {
 
   // Loop's vertex rule for the free vertices of replaced faces, over the conforming mesh's edges.
   std::vector<bool> moves(old.size(), false);
-  for (Index f = 0; f < num_faces; ++f) {
+  for (Index f = 0; f < num_faces && rule == Rule::Loop; ++f) {
     const std::int32_t p = r.face_pair[f];
     if (p != kNoPair ? !upgraded[p] : split_face[f] == Split::None) continue;
     for (Index v : mesh.triangles[f]) moves[v] = !r.fixed[v];
@@ -410,60 +514,7 @@ std::size_t refine_once(Refinement& r, const SmoothingOptions& options) {
     r.fixed[m] = true;
   }
 
-  // Kink guard. Loop's stencils presume a smooth, even neighbourhood; on skinny or folded input
-  // faces, or next to vertices held still, they can pull a point across its neighbours and fold
-  // or spike the surface. Wherever a non-sharp edge ends up bent more than the input's worst
-  // patch edge (or a face has no area), the vertices of its two faces fall back to linear
-  // subdivision (midpoints, old vertices in place), which only repeats bends that were there.
-  // Vertices only ever fall back, so this ends.
-  const EdgeTopology out_topo = build_edge_topology(out);
-  std::vector<Point>& placed = out.vertices;
-  std::vector<Point> out_normal(out.num_faces());
-  for (std::size_t g = 0; g < out.num_faces(); ++g) out_normal[g] = unit_normal(placed, out.triangles[g]);
-  std::vector<bool> guarded(out_topo.num_edges(), false);
-  for (std::size_t e = 0; e < out_topo.num_edges(); ++e) {
-    guarded[e] = out_topo.valence(e) == 2 && !r.sharp.contains(edge_key(out_topo.edges[e][0], out_topo.edges[e][1]));
-  }
-  std::vector<std::size_t> face_offset(out.num_vertices() + 1, 0);  // faces around each vertex
-  for (const Triangle& t : out.triangles) {
-    for (Index v : t) ++face_offset[v + 1];
-  }
-  std::partial_sum(face_offset.begin(), face_offset.end(), face_offset.begin());
-  std::vector<Index> faces_at(face_offset.back());
-  {
-    std::vector<std::size_t> fill(face_offset.begin(), face_offset.end() - 1);
-    for (Index g = 0; g < out.num_faces(); ++g) {
-      for (Index v : out.triangles[g]) faces_at[fill[v]++] = g;
-    }
-  }
-  std::vector<Index> dirty(out.num_faces());
-  std::iota(dirty.begin(), dirty.end(), Index{0});
-  std::vector<bool> queued(out.num_faces(), false);
-  while (!dirty.empty()) {
-    std::vector<Index> next;
-    for (Index g : dirty) {
-      for (Index e : out_topo.face_edges[g]) {
-        if (!guarded[e]) continue;
-        const auto faces = out_topo.faces_of(e);
-        const bool flat_enough = !out_normal[faces[0]].isZero() && !out_normal[faces[1]].isZero() &&
-                                 bend_cos(out.triangles, out_normal, out_topo, e) >= r.cos_kink;
-        if (flat_enough) continue;
-        for (Index h : faces) {
-          for (Index v : out.triangles[h]) {
-            if (placed[v] == linear[v]) continue;
-            placed[v] = linear[v];
-            for (std::size_t i = face_offset[v]; i < face_offset[v + 1]; ++i) {
-              const Index k = faces_at[i];
-              out_normal[k] = unit_normal(placed, out.triangles[k]);
-              if (!queued[k]) queued[k] = true, next.push_back(k);
-            }
-          }
-        }
-      }
-    }
-    for (Index g : next) queued[g] = false;
-    dirty = std::move(next);
-  }
+  if (rule == Rule::Loop) guard_kinks(r, linear, out);
 
   r.mesh = std::move(out);
   r.face_pair = std::move(out_face_pair);
@@ -506,8 +557,17 @@ SmoothedSurface smooth_patches(const SurfaceMesh& mesh, const Strata& strata, co
   r.cos_kink -= 1e-9;  // linear subdivision repeats the worst bend up to rounding
 
   SmoothedSurface result;
+  // First the midpoint splits that keep Loop's surface near the input, only for a smoothing that
+  // has rounds of Loop's to follow them.
+  for (int round = 0; options.max_deviation > 0 && options.max_iterations > 0 && round < options.max_bounding_rounds;
+       ++round) {
+    const std::size_t replaced = refine_once(r, options, Rule::Linear);
+    if (replaced == 0) break;
+    ++result.bounding_rounds;
+    result.faces_split += replaced;
+  }
   for (int round = 0; round < options.max_iterations; ++round) {
-    const std::size_t replaced = refine_once(r, options);
+    const std::size_t replaced = refine_once(r, options, Rule::Loop);
     if (replaced == 0) break;
     ++result.iterations;
     result.faces_split += replaced;

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "cells/growing_cells.hpp"
+#include "core/surface_measures.hpp"
 #include "features/smooth_patches.hpp"
 #include "features/strata.hpp"
 #include "geometry/self_intersections.hpp"
@@ -37,6 +38,10 @@ void MeshOptions::check() const {
   if (!(max_size > 0)) throw Error(Error::Kind::Usage, "--max-size must be positive, got " + std::to_string(max_size));
   if (threads < 0) throw Error(Error::Kind::Usage, "--threads must be 0 (all) or positive");
   if (smoothing_rounds() < 0) throw Error(Error::Kind::Usage, "--smoothing-iterations must be 0 or positive");
+  if (!(smoothing_tolerance >= 0 && std::isfinite(smoothing_tolerance))) {
+    throw Error(Error::Kind::Usage,
+                "--smoothing-tolerance must be 0 (none) or positive, got " + std::to_string(smoothing_tolerance));
+  }
   if (cvt_iterations < 0) throw Error(Error::Kind::Usage, "--cvt-iterations must be 0 or positive");
   if (!(max_aspect_ratio == 0 || (max_aspect_ratio >= kLowestMaxAspectRatio && std::isfinite(max_aspect_ratio)))) {
     throw Error(Error::Kind::Usage, "--max-aspect-ratio must be 0 (no splits) or at least " +
@@ -160,6 +165,7 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
       for (int rounds = options.smoothing_rounds(); rounds > 0;) {
         SmoothingOptions smoothing;
         smoothing.max_iterations = rounds;
+        smoothing.max_deviation = options.smoothing_tolerance * bounding_box_diagonal(input);
         SmoothedSurface smoothed = smooth_patches(input, strata, smoothing);
         if (smoothed.iterations == 0) break;
         rounds = smoothed.iterations - 1;  // the next try, if this one is refused
@@ -185,6 +191,7 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
           continue;
         }
         result.features.smoothing_iterations = smoothed.iterations;
+        result.features.smoothing_bounding_rounds = smoothed.bounding_rounds;
         if (carried) strata = std::move(*carried);
         result.smoothed_input = std::move(smoothed.mesh);
         break;

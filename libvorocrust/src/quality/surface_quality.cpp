@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/surface_measures.hpp"
 #include "geometry/box_tree.hpp"
 #include "quality/hausdorff.hpp"
 #include "quality/surface_topology.hpp"
@@ -82,10 +83,7 @@ SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMe
   if (input.num_faces() == 0) throw Error(Error::Kind::InvalidGeometry, "the input surface has no triangles");
   if (output.num_faces() == 0) throw Error(Error::Kind::InvalidGeometry, "the output surface has no triangles");
   SurfaceQuality q;
-  geometry::Box box;
-  for (const Triangle& t : input.triangles)
-    for (Index v : t) box.include(input.vertices[v]);
-  q.bounding_box_diagonal = (box.hi - box.lo).norm();
+  q.bounding_box_diagonal = bounding_box_diagonal(input);
   if (!(q.bounding_box_diagonal > 0)) {
     throw Error(Error::Kind::InvalidGeometry,
                 "the input surface has no extent (every vertex at one point): no distance can be relative to it");

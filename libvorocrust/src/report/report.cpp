@@ -215,6 +215,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                 {"sharp_angle_degrees", o.sharp_angle()},
                 {"max_size", std::isfinite(o.max_size) ? json(o.max_size) : json(nullptr)},
                 {"smoothing_iterations", o.smoothing_rounds()},
+                {"smoothing_tolerance", o.smoothing_tolerance},
                 {"min_triangle_angle_degrees", o.min_triangle_angle()},
                 {"sizing_file", o.sizing_file.string()},
                 {"stop_after", o.stop_after == Stage::Balls     ? "balls"
@@ -242,6 +243,7 @@ std::string run_report_json(const RunReport& report, int indent) {
     doc["features"] = {{"sharp_edges", f.sharp_edges}, {"corners", f.corners},  {"creases", f.creases},
                        {"patches", f.patches},         {"faces_after_smoothing", f.faces_after_smoothing},
                        {"smoothing_iterations", f.smoothing_iterations},
+                       {"smoothing_bounding_rounds", f.smoothing_bounding_rounds},
                        {"smoothing_rounds_refused", f.smoothing_rounds_refused},
                        {"smoothing_rounds_crossing", f.smoothing_rounds_crossing}};
     // The rows of the paper's Table 1, with the counts behind them.
