@@ -5,10 +5,9 @@
 
 #include "check_balls/check_balls.hpp"
 #include "check_balls_command.hpp"
+#include "domain_args.hpp"
 #include "exit_codes.hpp"
 #include "vorocrust/error.hpp"
-#include "vorocrust/read_mesh.hpp"
-#include "vorocrust/validate.hpp"
 
 namespace vorocrust::cli {
 
@@ -28,16 +27,10 @@ int run_check_balls(const CheckBallsArgs& args) {
   options.seed = args.seed;
   options.check();  // before reading anything, so a bad option fails fast
 
-  const std::vector<std::filesystem::path> inputs(args.files.begin(), args.files.end() - 1);
-  SurfaceMesh mesh = read_meshes(inputs);
-  // The contract assumes consistent orientation, which validation establishes; the self-intersections
-  // are resolved below as the run resolved them, so validation skips that (slow) check.
-  ValidationOptions validation;
-  validation.check_self_intersections = false;
-  (void)validate(mesh, validation);
   // The balls cover the surface the run started from: the input in its box, cut along its
   // self-intersections (a smoothed_surface.ply is that already, and stays as it is).
-  mesh = prepare_domain(mesh, mesher);
+  const std::vector<std::filesystem::path> inputs(args.files.begin(), args.files.end() - 1);
+  const SurfaceMesh mesh = read_domain(inputs, mesher);
   const std::vector<checker::CheckedBall> balls = checker::read_balls_csv(args.files.back());
 
   const checker::BallCheckReport report = checker::check_balls(mesh, balls, options);

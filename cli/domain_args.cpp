@@ -2,6 +2,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include "vorocrust/read_mesh.hpp"
+#include "vorocrust/validate.hpp"
+
 namespace vorocrust::cli {
 
 void DomainArgs::apply(MeshOptions& options) const {
@@ -9,6 +12,17 @@ void DomainArgs::apply(MeshOptions& options) const {
                                : self_intersections == "keep" ? SelfIntersections::Keep
                                                               : SelfIntersections::Resolve;
   if (box.size() == 6) options.box = {box[0], box[1], box[2], box[3], box[4], box[5]};
+}
+
+SurfaceMesh read_domain(const std::vector<std::filesystem::path>& models, const MeshOptions& options) {
+  SurfaceMesh mesh = read_meshes(models);
+  // The contract assumes consistent orientation, which validation establishes; the
+  // self-intersections are resolved below as the run resolved them, so validation skips that
+  // (slow) check.
+  ValidationOptions validation;
+  validation.check_self_intersections = false;
+  (void)validate(mesh, validation);
+  return prepare_domain(mesh, options);
 }
 
 void add_domain_options(CLI::App& command, DomainArgs& args, bool refuse) {

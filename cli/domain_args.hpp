@@ -2,6 +2,7 @@
 // by `mesh` and `check-balls`, which must start from the same surface to check that run's balls.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,12 @@ struct DomainArgs {
   // Sets options.box and options.self_intersections.
   void apply(MeshOptions& options) const;
 };
+
+// The surface a run of `options` started from: the models read and merged, validated (orientation
+// made consistent; their crossings are resolved, not refused), in their box, cut along their
+// self-intersections as options.self_intersections says (prepare_domain). What `check-balls` checks
+// a run's balls against and what `quality` measures its surface against.
+SurfaceMesh read_domain(const std::vector<std::filesystem::path>& models, const MeshOptions& options);
 
 // --box and --self-intersections on `command`; `refuse` only where the command can stop for
 // crossing faces (`mesh`: check-balls checks balls a run made, which a refused run made none of).

@@ -139,6 +139,7 @@ int main(int argc, char** argv) {
                           "Random points per surface for the Hausdorff distance, on top of vertices and edge midpoints")
       ->capture_default_str();
   quality_cmd->add_option("--seed", quality.options.seed, "Seed of the random points")->capture_default_str();
+  add_domain_options(*quality_cmd, quality.domain, /*refuse=*/false);
   quality_cmd->add_flag("--json", quality.json, "Print one JSON object instead of text");
 
   CellsArgs cells;

@@ -63,6 +63,10 @@ void print_surface_table(const SurfaceQuality& q, const fs::path& surface, const
   std::printf("Hausdorff distance  %.4g (%.3g%% of the input's bounding-box diagonal %.4g)\n", q.hausdorff,
               100 * q.hausdorff_relative, q.bounding_box_diagonal);
   std::printf("  input to output   %.4g\n  output to input   %.4g\n", q.input_to_output, q.output_to_input);
+  if (q.input_volume && q.output_volume && *q.input_volume != 0) {
+    std::printf("enclosed volume     %.6g -> %.6g (%+.2f%%)\n", *q.input_volume, *q.output_volume,
+                100 * (*q.output_volume - *q.input_volume) / *q.input_volume);
+  }
   if (q.topology_matches) {
     std::printf("topology            matches: %s\n", describe(q.output_topology).c_str());
   } else {
@@ -115,7 +119,9 @@ int run_quality(const QualityArgs& args) {
   std::vector<fs::path> inputs;
   if (has_surface) {
     inputs = input_paths(args, out);
-    const SurfaceMesh input = read_meshes(inputs);
+    MeshOptions run;  // what the run started from, as mesh's defaults or the options given
+    args.domain.apply(run);
+    const SurfaceMesh input = read_domain(inputs, run);
     const SurfaceMesh output = read_mesh(surface);
     surface_quality = measure_surface_quality(input, output, args.options);
   }

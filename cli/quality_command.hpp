@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "domain_args.hpp"
 #include "vorocrust/quality.hpp"
 
 namespace vorocrust::cli {
@@ -20,6 +21,7 @@ struct QualityArgs {
   std::string output_dir;
   std::vector<std::string> inputs;  // empty: the `inputs` of OUTDIR/report.json
   QualityOptions options;
+  DomainArgs domain;  // the surface the run started from: the inputs in their box, cut as the run cut them
   bool json = false;
 };
 

@@ -125,6 +125,29 @@ class Quality(unittest.TestCase):
         self.assertIn(model("sandia_torus.obj"), r.stdout)
         self.assertNotRegex(r.stdout, r"Hausdorff distance\s+0 ")
 
+    def test_a_run_is_measured_against_the_surface_it_started_from(self):
+        # An open sheet is meshed in its box: measured against the sheet alone, the box's sides
+        # were 19 % of the diagonal away and the topology differed. Measured against the sheet in
+        # its box, as the run measured it, the figures are report.json's.
+        r = run("mesh", model("gmsh_terrain.stl"), "-o", self.out, "--stop-after", "surface", "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(self.out, "report.json")) as f:
+            reported = json.load(f)["surface"]["quality"]
+        r = run("quality", self.out, "--json")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        measured = json.loads(r.stdout)
+        self.assertTrue(measured["topology"]["matches"])
+        self.assertEqual(measured["topology"], reported["topology"])
+        self.assertLess(measured["hausdorff"]["percent_of_bounding_box_diagonal"], 1)
+        self.assertAlmostEqual(measured["hausdorff"]["distance"], reported["hausdorff"]["distance"], places=9)
+        volume = measured["enclosed_volume"]
+        self.assertAlmostEqual(volume["output"], reported["enclosed_volume"]["output"], places=3)
+        self.assertLess(abs(volume["percent_change"]), 0.01)  # the box holds it all, sheet or none
+        # A box of the user's own is given again, as to check-balls.
+        r = run("quality", self.out, "--json", "--box", "-1", "-1", "-1", "1", "1", "1")
+        self.assertEqual(r.returncode, 4, r.stdout + r.stderr)
+        self.assertIn("box", r.stderr)
+
     def test_cells_alone_from_seeds_csv(self):
         # Truncated octahedra: R / r = sqrt(5/3), 14 faces, volume 1/2, edge sqrt(2)/4.
         cells = bcc_seeds(os.path.join(self.out, "seeds.csv"), 6)

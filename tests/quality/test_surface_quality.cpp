@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "quality/triangle_shape.hpp"
+#include "surface_builder.hpp"
 #include "test_support.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/quality.hpp"
@@ -180,6 +181,30 @@ TEST(SurfaceQuality, FiguresDoNotDependOnTheThreadCount) {
   EXPECT_EQ(one.output_to_input, all.output_to_input);
   EXPECT_EQ(one.mean_quality, all.mean_quality);
   EXPECT_EQ(one.quality_histogram, all.quality_histogram);
+}
+
+SurfaceMesh box_mesh(const Point& lo, const Point& hi) {
+  test::SurfaceBuilder b;
+  b.box(lo, hi);
+  return b.mesh;
+}
+
+TEST(SurfaceQuality, EnclosedVolumesAreTheRegionsButTheOutside) {
+  // A unit cube against a cube of side 0.9: 27.1 % of the volume lost.
+  const SurfaceQuality shrunk =
+      measure_surface_quality(box_mesh(Point::Zero(), Point::Ones()), box_mesh(Point::Zero(), Point::Constant(0.9)));
+  ASSERT_TRUE(shrunk.input_volume && shrunk.output_volume);
+  EXPECT_NEAR(*shrunk.input_volume, 1.0, 1e-12);
+  EXPECT_NEAR(*shrunk.output_volume, 0.729, 1e-12);
+  // Nested shells cut out two regions, the shell between them (63) and the core (1).
+  test::SurfaceBuilder nested;
+  nested.box(Point::Zero(), Point::Constant(4));
+  nested.box(Point::Ones(), Point::Constant(2));
+  EXPECT_NEAR(*of_itself(nested.mesh).input_volume, 64.0, 1e-9);
+  // An open sheet encloses nothing.
+  const SurfaceQuality sheet = of_itself(grid(4, 0.0));
+  EXPECT_EQ(*sheet.input_volume, 0.0);
+  EXPECT_EQ(*sheet.output_volume, 0.0);
 }
 
 TEST(SurfaceTopology, SphereAndTorusDiffer) {

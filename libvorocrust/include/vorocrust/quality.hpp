@@ -17,6 +17,9 @@
 //   Distances up to kNegligibleRelativeDistance times the input's bounding-box diagonal count as
 //   0: they are the rounding of points that lie on the other surface, not a gap, so a surface
 //   measured against itself is at distance exactly 0.
+// - the enclosed volume of each surface is that of every region of space it cuts out but the
+//   outside (regions.hpp: nested shells, materials, the cavities of the outside excluded), so
+//   its change tells how much a surface shrank or swelled against the input.
 // - components are faces joined through shared edges, each with its Euler characteristic
 //   V - E + F (2 for a sphere, 0 for a torus, 1 for a disc) and whether it is closed (no edge
 //   with a single face).
@@ -25,6 +28,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "vorocrust/surface_mesh.hpp"
@@ -73,6 +77,9 @@ struct SurfaceQuality {
   double output_to_input = 0;     // farthest output sample from the input surface
   double bounding_box_diagonal = 0;  // of the input
   std::size_t input_samples = 0, output_samples = 0;
+
+  // Unset for a surface whose regions cannot be told (labels at odds on one region of space).
+  std::optional<double> input_volume, output_volume;
 
   SurfaceTopology input_topology, output_topology;
   bool topology_matches = false;  // same_topology(input_topology, output_topology)

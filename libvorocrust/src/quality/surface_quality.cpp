@@ -14,6 +14,7 @@
 #include "quality/triangle_shape.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/quality.hpp"
+#include "vorocrust/regions.hpp"
 
 namespace vorocrust {
 
@@ -66,6 +67,18 @@ Side prepare(const SurfaceMesh& mesh, std::size_t random_samples, std::uint64_t 
   return {surface_topology(mesh, edges), surface_samples(mesh, edges, random_samples, seed), geometry::face_tree(mesh)};
 }
 
+// The volume of every region of space the surface cuts out but the outside.
+std::optional<double> enclosed_volume(const SurfaceMesh& mesh) {
+  try {
+    const std::vector<RegionSummary> regions = find_regions(mesh);
+    double volume = 0;
+    for (std::size_t r = 1; r < regions.size(); ++r) volume += regions[r].volume;
+    return volume;
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 std::vector<double> triangle_qualities(const SurfaceMesh& mesh) {
@@ -76,6 +89,7 @@ std::vector<double> triangle_qualities(const SurfaceMesh& mesh) {
   }
   return quality;
 }
+
 
 SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMesh& output,
                                        const QualityOptions& options) {
@@ -94,7 +108,9 @@ SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMe
   Side in, out;
   tbb::parallel_invoke([&] { in = prepare(input, options.random_samples, options.seed); },
                        [&] { out = prepare(output, options.random_samples, options.seed + 1); },
-                       [&] { measure_shapes(output, options.histogram_bins, q); });
+                       [&] { measure_shapes(output, options.histogram_bins, q); },
+                       [&] { q.input_volume = enclosed_volume(input); },
+                       [&] { q.output_volume = enclosed_volume(output); });
   q.input_topology = std::move(in.topology);
   q.output_topology = std::move(out.topology);
   q.topology_matches = same_topology(q.input_topology, q.output_topology);

@@ -85,6 +85,8 @@ json topology_object(const SurfaceTopology& t) {
           {"non_manifold_edges", t.non_manifold_edges}};
 }
 
+json optional_number(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
+
 // The paper's section 3 figures: angle bounds and shares, minimum triangle quality, the
 // Hausdorff distance relative to the bounding-box diagonal; with the counts behind them.
 json quality_object(const SurfaceQuality& q) {
@@ -107,6 +109,12 @@ json quality_object(const SurfaceQuality& q) {
             {"bounding_box_diagonal", q.bounding_box_diagonal},
             {"input_samples", q.input_samples},
             {"output_samples", q.output_samples}}},
+          {"enclosed_volume",
+           {{"input", optional_number(q.input_volume)},
+            {"output", optional_number(q.output_volume)},
+            {"percent_change", q.input_volume && q.output_volume && *q.input_volume != 0
+                                   ? json(100 * (*q.output_volume - *q.input_volume) / *q.input_volume)
+                                   : json(nullptr)}}},
           {"topology",
            {{"matches", q.topology_matches},
             {"input", topology_object(q.input_topology)},
