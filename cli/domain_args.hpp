@@ -1,5 +1,6 @@
 // The options that say what surface a run starts from (its box, its self-intersections), shared
-// by `mesh` and `check-balls`, which must start from the same surface to check that run's balls.
+// by `mesh`, `check-balls` and `quality`, which must start from the same surface to check that
+// run's balls and measure its output surface.
 #pragma once
 
 #include <filesystem>

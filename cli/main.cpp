@@ -73,9 +73,9 @@ int main(int argc, char** argv) {
       "--smoothing-iterations", [&](int rounds) { mesh.options.smoothing_iterations = rounds; },
       "Rounds of adaptive Loop subdivision inside smooth patches before refinement; default 0, or 6 with --smooth");
   mesh_cmd->add_option("--smoothing-tolerance", mesh.options.smoothing_tolerance,
-                       "How far smoothing may move the surface, as a fraction of the input's bounding-box diagonal: "
-                       "faces around a vertex Loop's rules would move farther are first split at their midpoints "
-                       "(at most twice); 0: Loop's rules alone")
+                       "How far smoothing should move the surface at most, as a fraction of the input's "
+                       "bounding-box diagonal (a target): faces around a vertex Loop's rules would move farther are "
+                       "first split at their midpoints, at most twice; 0: Loop's rules alone")
       ->capture_default_str();
   mesh_cmd->add_option_function<double>(
       "--min-triangle-angle", [&](double degrees) { mesh.options.min_triangle_angle_degrees = degrees; },
@@ -178,7 +178,10 @@ int main(int argc, char** argv) {
   try {
     if (*info_cmd) return run_info(info);
     if (*check_cmd) return run_check_balls(check);
-    if (*quality_cmd) return run_quality(quality);
+    if (*quality_cmd) {
+      quality.domain_given = quality_cmd->count("--box") + quality_cmd->count("--self-intersections") > 0;
+      return run_quality(quality);
+    }
     if (*cells_cmd) return run_cells(cells);
     mesh.command_line.assign(argv, argv + argc);
     return run_mesh(mesh);

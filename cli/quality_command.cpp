@@ -38,6 +38,12 @@ std::vector<fs::path> input_paths(const QualityArgs& args, const fs::path& out) 
   return paths;
 }
 
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", x);
+  return text;
+}
+
 // "3 components: 2 closed with Euler characteristic 2, 1 open with Euler characteristic 1".
 std::string describe(const SurfaceTopology& t) {
   std::map<std::pair<bool, long>, std::size_t> kinds;
@@ -63,9 +69,16 @@ void print_surface_table(const SurfaceQuality& q, const fs::path& surface, const
   std::printf("Hausdorff distance  %.4g (%.3g%% of the input's bounding-box diagonal %.4g)\n", q.hausdorff,
               100 * q.hausdorff_relative, q.bounding_box_diagonal);
   std::printf("  input to output   %.4g\n  output to input   %.4g\n", q.input_to_output, q.output_to_input);
-  if (q.input_volume && q.output_volume && *q.input_volume != 0) {
-    std::printf("enclosed volume     %.6g -> %.6g (%+.2f%%)\n", *q.input_volume, *q.output_volume,
-                100 * (*q.output_volume - *q.input_volume) / *q.input_volume);
+  if (const std::optional<double> change = q.volume_change_percent()) {
+    std::printf("enclosed volume     %.6g -> %.6g (%+.2f%%)\n", *q.input_volume, *q.output_volume, *change);
+    for (const RegionVolume& r : q.region_volumes) {
+      if (q.region_volumes.size() < 2) break;
+      const std::optional<double> region_change = r.change_percent();
+      std::printf("  %-17s %s -> %s", r.name.c_str(), r.input ? number(*r.input).c_str() : "none",
+                  r.output ? number(*r.output).c_str() : "none");
+      if (region_change) std::printf(" (%+.2f%%)", *region_change);
+      std::printf("\n");
+    }
   }
   if (q.topology_matches) {
     std::printf("topology            matches: %s\n", describe(q.output_topology).c_str());
@@ -119,8 +132,9 @@ int run_quality(const QualityArgs& args) {
   std::vector<fs::path> inputs;
   if (has_surface) {
     inputs = input_paths(args, out);
-    MeshOptions run;  // what the run started from, as mesh's defaults or the options given
-    args.domain.apply(run);
+    MeshOptions run;
+    if (args.domain_given || !fs::exists(out / "report.json")) args.domain.apply(run);
+    else run = run_report_domain(out / "report.json");
     const SurfaceMesh input = read_domain(inputs, run);
     const SurfaceMesh output = read_mesh(surface);
     surface_quality = measure_surface_quality(input, output, args.options);

@@ -1,5 +1,7 @@
 // `vorocrust quality OUTDIR`: the quality figures of a mesh run (paper section 3). The surface
-// figures of its output surface, OUTDIR/surface.ply, against the input it was made from; the
+// figures of its output surface, OUTDIR/surface.ply, against the input it was made from, as the
+// run started from it (validated, in its box, cut along its self-intersections: an input that
+// cannot be so prepared is refused as `mesh` refuses it); the
 // volume figures (cell_quality.hpp) of the cells of its seeds, OUTDIR/seeds.csv, rebuilt with
 // compute_cells, which gives the run's own cells again (it is deterministic) without a mesh file
 // to read back. Each part is measured when its file is there, at least one of them. Prints a
@@ -21,7 +23,10 @@ struct QualityArgs {
   std::string output_dir;
   std::vector<std::string> inputs;  // empty: the `inputs` of OUTDIR/report.json
   QualityOptions options;
-  DomainArgs domain;  // the surface the run started from: the inputs in their box, cut as the run cut them
+  // The surface the run started from, the inputs in their box and cut as the run cut them: these
+  // options when given (domain_given), else those OUTDIR/report.json records, else mesh's defaults.
+  DomainArgs domain;
+  bool domain_given = false;
   bool json = false;
 };
 

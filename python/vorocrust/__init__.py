@@ -101,10 +101,10 @@ def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTION
     sizing: a sizing file of lines "x y z size", interpolated (--sizing).
     smoothing_iterations: rounds of adaptive Loop subdivision inside smooth patches; None: none,
         or DEFAULT_OPTIONS["smooth_smoothing_iterations"] when smooth.
-    smoothing_tolerance: how far smoothing may move the surface, as a fraction of the input's
-        bounding-box diagonal: the faces around a vertex that Loop's rules would move farther are
-        first split at their edge midpoints, at most twice; 0 for Loop's rules alone
-        (--smoothing-tolerance).
+    smoothing_tolerance: how far smoothing should move the surface at most, as a fraction of the
+        input's bounding-box diagonal (a target, not a bound): the faces around a vertex that
+        Loop's rules would move farther are first split at their edge midpoints, at most twice; 0
+        for Loop's rules alone (--smoothing-tolerance).
     min_triangle_angle: surface triangles away from features with an angle below this many
         degrees (0 to 30) are split by shrinking the balls that cover their circumcentres
         (--min-triangle-angle); None: DEFAULT_OPTIONS["min_triangle_angle"] (0, none), or

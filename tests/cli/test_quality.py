@@ -141,12 +141,35 @@ class Quality(unittest.TestCase):
         self.assertLess(measured["hausdorff"]["percent_of_bounding_box_diagonal"], 1)
         self.assertAlmostEqual(measured["hausdorff"]["distance"], reported["hausdorff"]["distance"], places=9)
         volume = measured["enclosed_volume"]
-        self.assertAlmostEqual(volume["output"], reported["enclosed_volume"]["output"], places=3)
-        self.assertLess(abs(volume["percent_change"]), 0.01)  # the box holds it all, sheet or none
-        # A box of the user's own is given again, as to check-balls.
+        self.assertEqual(volume, reported["enclosed_volume"])
+        self.assertLess(abs(volume["percent_change"]), 0.01)  # the box holds it all
+        # The sheet floats in its box, which holds one material, "domain", on both of its sides.
+        self.assertEqual([region["name"] for region in volume["regions"]], ["domain"])
+        # Domain options given on the command line win over report.json's: a box the terrain
+        # does not fit in is refused, naming it.
         r = run("quality", self.out, "--json", "--box", "-1", "-1", "-1", "1", "1", "1")
         self.assertEqual(r.returncode, 4, r.stdout + r.stderr)
         self.assertIn("box", r.stderr)
+
+    def test_a_run_in_a_box_of_its_own_is_measured_in_that_box(self):
+        # report.json records the run's box; quality takes it from there when given none.
+        r = run("mesh", model("gmsh_terrain.stl"), "-o", self.out, "--stop-after", "surface", "-q",
+                "--box", "-50", "-50", "-1000", "3400", "2600", "1500")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(self.out, "report.json")) as f:
+            report = json.load(f)
+        self.assertEqual(report["options"]["box"], [-50, -50, -1000, 3400, 2600, 1500])
+        reported = report["surface"]["quality"]
+        r = run("quality", self.out, "--json")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        measured = json.loads(r.stdout)
+        self.assertEqual(measured["topology"], reported["topology"])
+        self.assertAlmostEqual(measured["hausdorff"]["distance"], reported["hausdorff"]["distance"], places=9)
+        self.assertEqual(measured["enclosed_volume"], reported["enclosed_volume"])
+        # The default box instead (another surface) tells another distance and volume.
+        r = run("quality", self.out, "--json", "--self-intersections", "resolve")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertNotEqual(json.loads(r.stdout)["enclosed_volume"]["input"], reported["enclosed_volume"]["input"])
 
     def test_cells_alone_from_seeds_csv(self):
         # Truncated octahedra: R / r = sqrt(5/3), 14 faces, volume 1/2, edge sqrt(2)/4.

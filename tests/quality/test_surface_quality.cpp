@@ -196,15 +196,46 @@ TEST(SurfaceQuality, EnclosedVolumesAreTheRegionsButTheOutside) {
   ASSERT_TRUE(shrunk.input_volume && shrunk.output_volume);
   EXPECT_NEAR(*shrunk.input_volume, 1.0, 1e-12);
   EXPECT_NEAR(*shrunk.output_volume, 0.729, 1e-12);
-  // Nested shells cut out two regions, the shell between them (63) and the core (1).
+  ASSERT_TRUE(shrunk.volume_change_percent());
+  EXPECT_NEAR(*shrunk.volume_change_percent(), -27.1, 1e-9);
+  ASSERT_EQ(shrunk.region_volumes.size(), 1u);
+  EXPECT_EQ(shrunk.region_volumes[0].name, "inside");
+
+  // Unlabelled nested shells cut out two regions, the shell between them (63) and the core (1).
   test::SurfaceBuilder nested;
   nested.box(Point::Zero(), Point::Constant(4));
   nested.box(Point::Ones(), Point::Constant(2));
-  EXPECT_NEAR(*of_itself(nested.mesh).input_volume, 64.0, 1e-9);
+  const SurfaceQuality two = of_itself(nested.mesh);
+  EXPECT_EQ(two.input_volume, std::optional(64.0));
+  ASSERT_EQ(two.region_volumes.size(), 2u);
+  EXPECT_NEAR(*two.region_volumes[0].input + *two.region_volumes[1].input, 64.0, 1e-9);
+  // Labelled as a hollow shell, the core is a cavity of the outside: 63 alone.
+  SurfaceMesh hollow = nested.mesh;
+  hollow.region_names = {"outside", "shell"};
+  hollow.face_regions.assign(hollow.num_faces(), RegionPair{1, 0});  // outer sides, normals out
+  for (std::size_t f = 12; f < 24; ++f) hollow.face_regions[f] = RegionPair{0, 1};  // the core's sides face the shell
+  const SurfaceQuality shell = of_itself(hollow);
+  ASSERT_TRUE(shell.input_volume);
+  EXPECT_NEAR(*shell.input_volume, 63.0, 1e-9);
+  ASSERT_EQ(shell.region_volumes.size(), 1u);
+  EXPECT_EQ(shell.region_volumes[0].name, "shell");
+  EXPECT_EQ(shell.region_volumes[0].change_percent(), std::optional(0.0));
+
+  // Labels at odds on one region of space: no volume to tell, and no error.
+  SurfaceMesh odd = box_mesh(Point::Zero(), Point::Ones());
+  odd.region_names = {"outside", "a", "b"};
+  odd.face_regions.assign(odd.num_faces(), RegionPair{1, 0});
+  odd.face_regions[0] = RegionPair{2, 0};
+  const SurfaceQuality unknown = measure_surface_quality(box_mesh(Point::Zero(), Point::Ones()), odd);
+  EXPECT_TRUE(unknown.input_volume);
+  EXPECT_FALSE(unknown.output_volume);
+  EXPECT_FALSE(unknown.volume_change_percent());
+
   // An open sheet encloses nothing.
   const SurfaceQuality sheet = of_itself(grid(4, 0.0));
-  EXPECT_EQ(*sheet.input_volume, 0.0);
-  EXPECT_EQ(*sheet.output_volume, 0.0);
+  EXPECT_EQ(sheet.input_volume, std::optional(0.0));
+  EXPECT_EQ(sheet.output_volume, std::optional(0.0));
+  EXPECT_FALSE(sheet.volume_change_percent());
 }
 
 TEST(SurfaceTopology, SphereAndTorusDiffer) {

@@ -72,10 +72,12 @@ struct MeshOptions {
   // on CAD models it costs more than it gives (the surface grows, sandia_torus 9 216 faces to
   // 189 504, and the refinement with it); 6 with `smooth`.
   std::optional<int> smoothing_iterations;
-  // How far smoothing may move the surface from the input, as a fraction of the input's
-  // bounding-box diagonal: before Loop's rounds, the faces around a vertex that Loop's rules
-  // would move farther than this (its limit point, along its normal) are split at their edge
-  // midpoints, up to twice, each split halving that move (features/smooth_patches.hpp). Loop's
+  // How far smoothing should move the surface from the input at most, as a fraction of the
+  // input's bounding-box diagonal: before Loop's rounds, the faces around a vertex that Loop's
+  // rules would move farther than this (its limit point, along its normal) are split at their
+  // edge midpoints, up to twice, each split halving that move (features/smooth_patches.hpp). A
+  // target, not a bound: a vertex that would move more than four times as far still moves more
+  // (FeatureCounts::smoothing_largest_offset says how far). Loop's
   // rules shrink a coarse tessellation of a strongly bent shape: directional_bimba (697
   // vertices) ends 1.56 % of its diagonal from its input without these splits, 0.85 to 0.91 %
   // with them (seeds 0 to 4). Three quarters of the paper's 1 %, which leaves the rest to the
@@ -210,6 +212,9 @@ struct FeatureCounts {
   std::size_t faces_after_smoothing = 0;
   int smoothing_iterations = 0;      // rounds applied
   int smoothing_bounding_rounds = 0;  // rounds of midpoint splits before them (MeshOptions::smoothing_tolerance)
+  // After those splits, how far Loop's rules move the vertex they move farthest (its limit point
+  // along its normal), over the bounding-box diagonal; 0 without a smoothing tolerance.
+  double smoothing_largest_offset = 0;
   int smoothing_rounds_refused = 0;   // fewest rounds that made a new feature (0: none did)
   // Fewest rounds refused as they carried the surface through itself: faces crossing, or a shell
   // moved wholly across another (0: none was).

@@ -17,9 +17,11 @@
 //   Distances up to kNegligibleRelativeDistance times the input's bounding-box diagonal count as
 //   0: they are the rounding of points that lie on the other surface, not a gap, so a surface
 //   measured against itself is at distance exactly 0.
-// - the enclosed volume of each surface is that of every region of space it cuts out but the
-//   outside (regions.hpp: nested shells, materials, the cavities of the outside excluded), so
-//   its change tells how much a surface shrank or swelled against the input.
+// - the volume of each region of space a surface cuts out but the outside (regions.hpp: the
+//   regions of nested shells, materials, not the cavities of the outside), matched by name, and
+//   their sum, the volume the surface encloses: how much each region and the whole shrank or
+//   swelled against the input. A sheet inside a box changes only the regions it divides, not
+//   the sum.
 // - components are faces joined through shared edges, each with its Euler characteristic
 //   V - E + F (2 for a sphere, 0 for a torus, 1 for a disc) and whether it is closed (no edge
 //   with a single face).
@@ -29,6 +31,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "vorocrust/surface_mesh.hpp"
@@ -63,6 +66,18 @@ struct QualityOptions {
   void check() const;
 };
 
+// 100 (after - before) / before, when both are known and `before` is not 0.
+inline std::optional<double> percent_change(const std::optional<double>& before, const std::optional<double>& after) {
+  if (!before || !after || *before == 0) return std::nullopt;
+  return 100 * (*after - *before) / *before;
+}
+
+struct RegionVolume {
+  std::string name;
+  std::optional<double> input, output;  // unset where that surface has no region of this name
+  std::optional<double> change_percent() const { return percent_change(input, output); }
+};
+
 struct SurfaceQuality {
   std::size_t triangles = 0;  // of the output
   double min_angle_degrees = 0, max_angle_degrees = 0;
@@ -80,6 +95,11 @@ struct SurfaceQuality {
 
   // Unset for a surface whose regions cannot be told (labels at odds on one region of space).
   std::optional<double> input_volume, output_volume;
+  // Per region but the outside, the input's in label order, then those of the output alone.
+  std::vector<RegionVolume> region_volumes;
+  // 100 (output - input) / input of the enclosed volume, when both are known and the input's is
+  // not 0.
+  std::optional<double> volume_change_percent() const { return percent_change(input_volume, output_volume); }
 
   SurfaceTopology input_topology, output_topology;
   bool topology_matches = false;  // same_topology(input_topology, output_topology)

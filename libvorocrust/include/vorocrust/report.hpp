@@ -45,6 +45,12 @@ std::string run_report_json(const RunReport& report, int indent = 2);
 // when it is missing, is not JSON or has no list of input paths.
 std::vector<std::string> run_report_inputs(const std::filesystem::path& report_json);
 
+// The surface a mesh run started from, as its OUTDIR/report.json records it: `options.box` and
+// `options.self_intersections` set from its "options" (those it does not hold keep their
+// defaults). Throws Error(UnreadableInput) naming the file when it is missing or is not JSON, or
+// holds a box or mode of the wrong form.
+MeshOptions run_report_domain(const std::filesystem::path& report_json);
+
 // The region names of a mesh run's OUTDIR/report.json ("surface": {"regions"}), by label; empty
 // when the file is missing, unreadable or names none (the seeds then go unnamed).
 std::vector<std::string> run_report_regions(const std::filesystem::path& report_json);

@@ -172,9 +172,24 @@ enum class Split : std::uint8_t { None, Green, Red };
 
 // How a round places its points and which faces it splits.
 enum class Rule : std::uint8_t {
-  Loop,    // Loop's rules, on faces whose patch still bends
-  Linear,  // edge midpoints and nothing moved, on faces whose patch Loop would move too far
+  Loop,      // Loop's rules, on faces whose patch still bends
+  Midpoint,  // edge midpoints and nothing moved, on faces about vertices Loop would move too far
 };
+
+// The sum of each vertex's neighbours over the mesh's edges, and how many there are.
+struct Rings {
+  std::vector<Point> sum;
+  std::vector<std::size_t> valence;
+};
+
+Rings rings_of(const std::vector<Point>& p, const EdgeTopology& topo) {
+  Rings rings{std::vector<Point>(p.size(), Point::Zero()), std::vector<std::size_t>(p.size(), 0)};
+  for (const auto& [a, b] : topo.edges) {
+    rings.sum[a] += p[b], ++rings.valence[a];
+    rings.sum[b] += p[a], ++rings.valence[b];
+  }
+  return rings;
+}
 
 // The faces a Loop round splits: those with a non-sharp edge bent by more than
 // pi - flat_dihedral, not flat yet.
@@ -195,38 +210,44 @@ std::vector<bool> bent_faces(const Refinement& r, const EdgeTopology& topo, cons
   return marked;
 }
 
-// The faces a Linear round splits: those with a vertex that Loop's rules, carried to their limit,
-// would move across the surface by more than options.max_deviation. Loop's limit point of a
-// vertex v of valence n is v + n chi (mean of its neighbours - v), chi = 1 / (n + 3 / (8 beta))
-// (Loop 1987); its component along v's normal is how far the smooth surface leaves the input at
-// v (the tangential part only slides along it). A midpoint split halves the mean's offset, so
-// where the input's tessellation is coarse for how much it bends, the smooth surface comes
-// closer to it.
-std::vector<bool> straying_faces(const Refinement& r, const EdgeTopology& topo, const SmoothingOptions& options) {
+// Per vertex, how far Loop's rules carried to their limit would move it across the surface (0
+// for the vertices that never move). Loop's limit point of a vertex v of valence n is
+// v + n chi (mean of its neighbours - v), chi = 1 / (n + 3 / (8 beta)) (Loop 1987); its component
+// along v's normal is how far the smooth surface leaves the input at v, the tangential part only
+// sliding along it. Splitting every edge at v halves its neighbours' offset from it, and so this
+// move; the new midpoints are judged in the next round.
+std::vector<double> limit_offsets(const Refinement& r, const EdgeTopology& topo) {
   const SurfaceMesh& mesh = r.mesh;
   const std::vector<Point>& p = mesh.vertices;
-  std::vector<Point> neighbour_sum(p.size(), Point::Zero()), normal(p.size(), Point::Zero());
-  std::vector<std::size_t> valence(p.size(), 0);
-  for (const auto& [a, b] : topo.edges) {
-    neighbour_sum[a] += p[b], ++valence[a];
-    neighbour_sum[b] += p[a], ++valence[b];
-  }
+  const Rings rings = rings_of(p, topo);
+  // Area-weighted over the faces as oriented (validation makes them agree; a fold bent past 90
+  // degrees still adds up the right way round). On a non-orientable patch they partly cancel,
+  // and the move is underestimated there.
+  std::vector<Point> normal(p.size(), Point::Zero());
   for (const Triangle& t : mesh.triangles) {
-    const Point n = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);  // area-weighted
+    const Point n = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);
     for (Index v : t) normal[v] += n;
   }
-  std::vector<bool> strays(p.size(), false);
+  std::vector<double> offset(p.size(), 0.0);
   for (Index v = 0; v < p.size(); ++v) {
-    if (r.fixed[v] || valence[v] == 0 || normal[v].isZero()) continue;
-    const auto n = static_cast<double>(valence[v]);
-    const double chi = 1 / (n + 3 / (8 * loop_beta(valence[v])));
-    const Point offset = n * chi * (neighbour_sum[v] / n - p[v]);
-    strays[v] = std::abs(offset.dot(normal[v].normalized())) > options.max_deviation;
+    const std::size_t valence = rings.valence[v];
+    if (r.fixed[v] || valence == 0 || normal[v].isZero()) continue;
+    const auto n = static_cast<double>(valence);
+    const double chi = 1 / (n + 3 / (8 * loop_beta(valence)));
+    offset[v] = std::abs((n * chi * (rings.sum[v] / n - p[v])).dot(normal[v].normalized()));
   }
-  std::vector<bool> marked(mesh.num_faces(), false);
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
-    const Triangle& t = mesh.triangles[f];
-    marked[f] = strays[t[0]] || strays[t[1]] || strays[t[2]];
+  return offset;
+}
+
+// The faces a Midpoint round splits: those with a vertex that Loop's rules would move across the
+// surface by more than options.max_deviation, so that where the input's tessellation is coarse
+// for how much it bends, the smooth surface comes closer to it.
+std::vector<bool> straying_faces(const Refinement& r, const EdgeTopology& topo, const SmoothingOptions& options) {
+  const std::vector<double> offset = limit_offsets(r, topo);
+  std::vector<bool> marked(r.mesh.num_faces(), false);
+  for (std::size_t f = 0; f < marked.size(); ++f) {
+    const Triangle& t = r.mesh.triangles[f];
+    marked[f] = std::max({offset[t[0]], offset[t[1]], offset[t[2]]}) > options.max_deviation;
   }
   return marked;
 }
@@ -382,7 +403,7 @@ std::size_t refine_once(Refinement& r, const SmoothingOptions& options, Rule rul
     const Point midpoint = 0.5 * (old[a] + old[b]);
     linear.push_back(midpoint);
     // Creases keep their straight edges exactly; cone points keep their cones.
-    if (rule == Rule::Linear || sharp[e] || ends.cone(a) || ends.cone(b)) {
+    if (rule == Rule::Midpoint || sharp[e] || ends.cone(a) || ends.cone(b)) {
       points.push_back(midpoint);
       continue;
     }
@@ -421,16 +442,12 @@ std::size_t refine_once(Refinement& r, const SmoothingOptions& options, Rule rul
     if (p != kNoPair ? !upgraded[p] : split_face[f] == Split::None) continue;
     for (Index v : mesh.triangles[f]) moves[v] = !r.fixed[v];
   }
-  std::vector<Point> neighbour_sum(old.size(), Point::Zero());
-  std::vector<std::size_t> valence(old.size(), 0);
-  for (const auto& [a, b] : topo.edges) {
-    if (moves[a]) neighbour_sum[a] += old[b], ++valence[a];
-    if (moves[b]) neighbour_sum[b] += old[a], ++valence[b];
-  }
+  const Rings rings = rings_of(old, topo);
   for (Index v = 0; v < old.size(); ++v) {
-    if (!moves[v] || valence[v] == 0) continue;
-    const double beta = loop_beta(valence[v]);
-    points[v] = (1 - static_cast<double>(valence[v]) * beta) * old[v] + beta * neighbour_sum[v];
+    const std::size_t valence = rings.valence[v];
+    if (!moves[v] || valence == 0) continue;
+    const double beta = loop_beta(valence);
+    points[v] = (1 - static_cast<double>(valence) * beta) * old[v] + beta * rings.sum[v];
   }
 
   // The subdivided mesh. Children are emitted where their parent was, in its vertex order.
@@ -561,10 +578,14 @@ SmoothedSurface smooth_patches(const SurfaceMesh& mesh, const Strata& strata, co
   // has rounds of Loop's to follow them.
   for (int round = 0; options.max_deviation > 0 && options.max_iterations > 0 && round < options.max_bounding_rounds;
        ++round) {
-    const std::size_t replaced = refine_once(r, options, Rule::Linear);
+    const std::size_t replaced = refine_once(r, options, Rule::Midpoint);
     if (replaced == 0) break;
     ++result.bounding_rounds;
     result.faces_split += replaced;
+  }
+  if (options.max_deviation > 0 && options.max_iterations > 0) {
+    const std::vector<double> offset = limit_offsets(r, build_edge_topology(r.mesh));
+    result.largest_limit_offset = offset.empty() ? 0 : *std::max_element(offset.begin(), offset.end());
   }
   for (int round = 0; round < options.max_iterations; ++round) {
     const std::size_t replaced = refine_once(r, options, Rule::Loop);

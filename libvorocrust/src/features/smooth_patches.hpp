@@ -40,11 +40,14 @@
 // - Bounding rounds: with max_deviation > 0, before Loop's rounds, up to max_bounding_rounds
 //   rounds split (red-green, as above) the faces around each free vertex whose limit point under
 //   Loop's rules lies farther than max_deviation along its normal, at edge midpoints with nothing
-//   moved. Each such split about a vertex halves how far Loop's rules then move it, so a coarse
+//   moved. Splitting every edge at a vertex halves how far Loop's rules then move it, so a coarse
 //   tessellation of a strongly bent shape (directional_bimba: 697 vertices, folds up to 129
 //   degrees) is smoothed into a surface near it instead of shrunk away from it; where the
-//   tessellation is fine for its bends, nothing is split. These rounds are not counted in
-//   `iterations`, and none runs when max_iterations is 0.
+//   tessellation is fine for its bends, nothing is split. max_deviation is a target, not a bound:
+//   a vertex Loop would move by more than 2^max_bounding_rounds times it still moves by more
+//   (largest_limit_offset says how far the farthest one goes), and the limit surface between
+//   vertices is judged by its vertices only. These rounds are not counted in `iterations`, and
+//   none runs when max_iterations is 0.
 // - Input vertices keep their indices (new ones are appended), children inherit their parent's
 //   group, source line and region pair, and keep its orientation. Subdivision changes no
 //   topology: components, boundaries, non-manifold edges and Euler characteristics stay.
@@ -73,6 +76,9 @@ struct SmoothedSurface {
   std::vector<Index> corners;                     // the input's corners (same vertex indices as before)
   int iterations = 0;                             // Loop rounds that split at least one face
   int bounding_rounds = 0;                        // midpoint rounds before them
+  // After those, the farthest any vertex's limit point lies from it along its normal (0 without
+  // max_deviation).
+  double largest_limit_offset = 0;
   std::size_t faces_split = 0;                    // faces replaced by their children, summed over rounds
 };
 

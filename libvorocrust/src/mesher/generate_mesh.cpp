@@ -162,10 +162,11 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
       // A refused smoothing that stopped early would come again for every round count down to
       // the rounds it applied, so the next try takes one round fewer than those.
       std::optional<bool> input_crosses_itself;
+      const double diagonal = bounding_box_diagonal(input);
       for (int rounds = options.smoothing_rounds(); rounds > 0;) {
         SmoothingOptions smoothing;
         smoothing.max_iterations = rounds;
-        smoothing.max_deviation = options.smoothing_tolerance * bounding_box_diagonal(input);
+        smoothing.max_deviation = options.smoothing_tolerance * diagonal;
         SmoothedSurface smoothed = smooth_patches(input, strata, smoothing);
         if (smoothed.iterations == 0) break;
         rounds = smoothed.iterations - 1;  // the next try, if this one is refused
@@ -192,6 +193,7 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
         }
         result.features.smoothing_iterations = smoothed.iterations;
         result.features.smoothing_bounding_rounds = smoothed.bounding_rounds;
+        result.features.smoothing_largest_offset = diagonal > 0 ? smoothed.largest_limit_offset / diagonal : 0;
         if (carried) strata = std::move(*carried);
         result.smoothed_input = std::move(smoothed.mesh);
         break;

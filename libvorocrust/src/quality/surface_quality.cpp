@@ -67,16 +67,41 @@ Side prepare(const SurfaceMesh& mesh, std::size_t random_samples, std::uint64_t 
   return {surface_topology(mesh, edges), surface_samples(mesh, edges, random_samples, seed), geometry::face_tree(mesh)};
 }
 
-// The volume of every region of space the surface cuts out but the outside.
-std::optional<double> enclosed_volume(const SurfaceMesh& mesh) {
+// The regions of space the surface cuts out but the outside, in label order; nullopt where labels
+// are at odds on one region of space.
+std::optional<std::vector<RegionSummary>> regions_inside(const SurfaceMesh& mesh) {
   try {
-    const std::vector<RegionSummary> regions = find_regions(mesh);
-    double volume = 0;
-    for (std::size_t r = 1; r < regions.size(); ++r) volume += regions[r].volume;
-    return volume;
-  } catch (const Error&) {
+    std::vector<RegionSummary> regions = find_regions(mesh);
+    if (!regions.empty()) regions.erase(regions.begin());
+    return regions;
+  } catch (const Error& e) {
+    if (e.kind() != Error::Kind::InvalidGeometry) throw;
     return std::nullopt;
   }
+}
+
+std::optional<double> volume_of(const std::optional<std::vector<RegionSummary>>& regions) {
+  if (!regions) return std::nullopt;
+  double volume = 0;
+  for (const RegionSummary& r : *regions) volume += r.volume;
+  return volume;
+}
+
+// The regions of both surfaces matched by name.
+std::vector<RegionVolume> matched_by_name(const std::optional<std::vector<RegionSummary>>& input,
+                                          const std::optional<std::vector<RegionSummary>>& output) {
+  std::vector<RegionVolume> out;
+  const auto entry = [&](const std::string& name) -> RegionVolume& {
+    const auto it = std::find_if(out.begin(), out.end(), [&](const RegionVolume& v) { return v.name == name; });
+    return it != out.end() ? *it : out.emplace_back(RegionVolume{name, std::nullopt, std::nullopt});
+  };
+  if (input) {
+    for (const RegionSummary& r : *input) entry(r.name).input = r.volume;
+  }
+  if (output) {
+    for (const RegionSummary& r : *output) entry(r.name).output = r.volume;
+  }
+  return out;
 }
 
 }  // namespace
@@ -106,11 +131,15 @@ SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMe
   // The two surfaces are prepared side by side, each serially, so neither depends on the thread
   // count. Their seeds differ so that equal surfaces are not sampled at equal points.
   Side in, out;
+  std::optional<std::vector<RegionSummary>> input_regions, output_regions;
   tbb::parallel_invoke([&] { in = prepare(input, options.random_samples, options.seed); },
                        [&] { out = prepare(output, options.random_samples, options.seed + 1); },
                        [&] { measure_shapes(output, options.histogram_bins, q); },
-                       [&] { q.input_volume = enclosed_volume(input); },
-                       [&] { q.output_volume = enclosed_volume(output); });
+                       [&] { input_regions = regions_inside(input); },
+                       [&] { output_regions = regions_inside(output); });
+  q.input_volume = volume_of(input_regions);
+  q.output_volume = volume_of(output_regions);
+  q.region_volumes = matched_by_name(input_regions, output_regions);
   q.input_topology = std::move(in.topology);
   q.output_topology = std::move(out.topology);
   q.topology_matches = same_topology(q.input_topology, q.output_topology);

@@ -1,5 +1,7 @@
 #include "vorocrust/report.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -87,6 +89,21 @@ json topology_object(const SurfaceTopology& t) {
 
 json optional_number(const std::optional<double>& x) { return x ? json(*x) : json(nullptr); }
 
+// The volume the surfaces enclose, and each region's.
+json enclosed_volume_object(const SurfaceQuality& q) {
+  json regions = json::array();
+  for (const RegionVolume& r : q.region_volumes) {
+    regions.push_back({{"name", r.name},
+                       {"input", optional_number(r.input)},
+                       {"output", optional_number(r.output)},
+                       {"percent_change", optional_number(r.change_percent())}});
+  }
+  return {{"input", optional_number(q.input_volume)},
+          {"output", optional_number(q.output_volume)},
+          {"percent_change", optional_number(q.volume_change_percent())},
+          {"regions", regions}};
+}
+
 // The paper's section 3 figures: angle bounds and shares, minimum triangle quality, the
 // Hausdorff distance relative to the bounding-box diagonal; with the counts behind them.
 json quality_object(const SurfaceQuality& q) {
@@ -109,12 +126,7 @@ json quality_object(const SurfaceQuality& q) {
             {"bounding_box_diagonal", q.bounding_box_diagonal},
             {"input_samples", q.input_samples},
             {"output_samples", q.output_samples}}},
-          {"enclosed_volume",
-           {{"input", optional_number(q.input_volume)},
-            {"output", optional_number(q.output_volume)},
-            {"percent_change", q.input_volume && q.output_volume && *q.input_volume != 0
-                                   ? json(100 * (*q.output_volume - *q.input_volume) / *q.input_volume)
-                                   : json(nullptr)}}},
+          {"enclosed_volume", enclosed_volume_object(q)},
           {"topology",
            {{"matches", q.topology_matches},
             {"input", topology_object(q.input_topology)},
@@ -252,6 +264,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                        {"patches", f.patches},         {"faces_after_smoothing", f.faces_after_smoothing},
                        {"smoothing_iterations", f.smoothing_iterations},
                        {"smoothing_bounding_rounds", f.smoothing_bounding_rounds},
+                       {"smoothing_largest_offset", f.smoothing_largest_offset},
                        {"smoothing_rounds_refused", f.smoothing_rounds_refused},
                        {"smoothing_rounds_crossing", f.smoothing_rounds_crossing}};
     // The rows of the paper's Table 1, with the counts behind them.
@@ -348,16 +361,51 @@ std::vector<std::string> run_report_regions(const std::filesystem::path& report_
   return names;
 }
 
-std::vector<std::string> run_report_inputs(const std::filesystem::path& report_json) {
-  const auto fail = [&](const std::string& why) {
-    throw Error(Error::Kind::UnreadableInput, why, {.file = report_json.string()});
-  };
+namespace {
+
+[[noreturn]] void fail_on_report(const std::filesystem::path& report_json, const std::string& why) {
+  throw Error(Error::Kind::UnreadableInput, why, {.file = report_json.string()});
+}
+
+// An OUTDIR/report.json read whole; Error(UnreadableInput) naming it when it cannot be.
+json read_run_report(const std::filesystem::path& report_json) {
   std::ifstream in(report_json, std::ios::binary);
-  if (!in) fail(std::filesystem::exists(report_json) ? "cannot open" : "cannot open: no such file");
+  if (!in) fail_on_report(report_json, std::filesystem::exists(report_json) ? "cannot open" : "cannot open: no such file");
   std::stringstream text;
   text << in.rdbuf();
-  const json doc = json::parse(text.str(), nullptr, false);
-  if (doc.is_discarded()) fail("not a JSON document");
+  json doc = json::parse(text.str(), nullptr, false);
+  if (doc.is_discarded()) fail_on_report(report_json, "not a JSON document");
+  return doc;
+}
+
+}  // namespace
+
+MeshOptions run_report_domain(const std::filesystem::path& report_json) {
+  const json doc = read_run_report(report_json);
+  MeshOptions options;
+  if (!doc.is_object() || !doc.contains("options") || !doc["options"].is_object()) return options;
+  const json& o = doc["options"];
+  if (const auto box = o.find("box"); box != o.end() && !box->is_null()) {
+    if (!box->is_array() || box->size() != 6 ||
+        !std::all_of(box->begin(), box->end(), [](const json& x) { return x.is_number(); })) {
+      fail_on_report(report_json, "'options.box' is not a list of six numbers");
+    }
+    options.box = std::array<double, 6>{};
+    for (std::size_t k = 0; k < 6; ++k) (*options.box)[k] = (*box)[k].get<double>();
+  }
+  if (const auto mode = o.find("self_intersections"); mode != o.end()) {
+    const std::string name = mode->is_string() ? mode->get<std::string>() : "";
+    const auto known = {SelfIntersections::Resolve, SelfIntersections::Refuse, SelfIntersections::Keep};
+    const auto it = std::find_if(known.begin(), known.end(), [&](SelfIntersections m) { return name == to_string(m); });
+    if (it == known.end()) fail_on_report(report_json, "'options.self_intersections' is not resolve, refuse or keep");
+    options.self_intersections = *it;
+  }
+  return options;
+}
+
+std::vector<std::string> run_report_inputs(const std::filesystem::path& report_json) {
+  const auto fail = [&](const std::string& why) { fail_on_report(report_json, why); };
+  const json doc = read_run_report(report_json);
   const auto inputs = doc.find("inputs");
   if (!doc.is_object() || inputs == doc.end() || !inputs->is_array() || inputs->empty()) {
     fail("no 'inputs' list of model files");
