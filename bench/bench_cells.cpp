@@ -14,6 +14,7 @@
 #include "cells/voronoi_cells.hpp"
 #include "vorocrust/cell_quality.hpp"
 #include "vorocrust/cells.hpp"
+#include "voropp_full_cells.hpp"
 
 namespace {
 
@@ -65,31 +66,10 @@ void raw_cells(benchmark::State& state) {
 void voropp_full_cells(benchmark::State& state) {
   const double lo = -1, hi = kSide;
   const int blocks = static_cast<int>(std::lround((hi - lo) / std::cbrt(voro::optimal_particles)));
-  std::vector<double> xyz;
-  std::vector<int> faces, ids;
   std::size_t cells = 0;
   for (auto _ : state) {
-    voro::container con(lo, hi, lo, hi, lo, hi, blocks, blocks, blocks, false, false, false, 8);
-    voro::particle_order order;
-    for (std::size_t s = 0; s < seeds().size(); ++s) {
-      const auto& p = seeds()[s].position;
-      if (seeds()[s].region > 0) con.put(order, static_cast<int>(s), p.x(), p.y(), p.z());
-      else con.put(static_cast<int>(s), p.x(), p.y(), p.z());
-    }
-    voro::c_loop_order loop(con, order);
-    voro::voronoicell_neighbor cell;
-    cells = 0;
-    if (loop.start()) {
-      do {
-        if (!con.compute_cell(cell, loop)) continue;
-        double x, y, z;
-        loop.pos(x, y, z);
-        cell.vertices(x, y, z, xyz);
-        cell.face_vertices(faces);
-        cell.neighbors(ids);
-        ++cells;
-      } while (loop.inc());
-    }
+    cells = vorocrust::bench::voropp_full_cells(seeds(), vorocrust::Point::Constant(lo), vorocrust::Point::Constant(hi),
+                                                {blocks, blocks, blocks});
   }
   state.counters["cells"] = static_cast<double>(cells);
   state.counters["cells/s"] = benchmark::Counter(static_cast<double>(cells), benchmark::Counter::kIsIterationInvariantRate);

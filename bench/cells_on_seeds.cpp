@@ -1,8 +1,6 @@
 // The cells stage on a run's own seeds (OUTDIR/seeds.csv) against Voro++ by itself on the same
-// seeds: one container of every seed on one thread, each material cell computed with its
-// neighbours and its vertices, faces and neighbour ids extracted (as bench_cells.cpp's
-// voropp_full_cells), at Voro++'s own block size times each factor given, since VoroCrust's
-// seeds (thin layers of surface seeds, sparse interior and outside seeds) are far from the even
+// seeds (voropp_full_cells.hpp: one container, one thread, full cells extracted), at Voro++'s
+// own block size times each factor given, since VoroCrust's seeds (thin layers of surface seeds, sparse interior and outside seeds) are far from the even
 // density that block size assumes; then compute_cells, the whole conforming mesh, on 1 and 2
 // threads. Prints one line per measurement; the figures go to bench/RESULTS.md.
 //
@@ -12,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -21,6 +20,7 @@
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/seeds.hpp"
+#include "voropp_full_cells.hpp"
 
 namespace {
 
@@ -28,42 +28,19 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Voro++'s single-thread rate: the cells it computes (it may lose some among nearly coincident
-// seeds) and the seconds, container filling included.
+// Voro++'s single-thread rate over the seeds' bounding box: the cells it gives and the seconds,
+// container filling included.
 std::pair<std::size_t, double> voropp_cells(const std::vector<vorocrust::Seed>& seeds, double block_factor) {
   Eigen::AlignedBox3d box;
   for (const vorocrust::Seed& s : seeds) box.extend(s.position);
   const vorocrust::Point margin = 1e-3 * box.sizes();
   const vorocrust::Point lo = box.min() - margin, hi = box.max() + margin, size = hi - lo;
   const double block = std::cbrt(size.prod() * voro::optimal_particles / static_cast<double>(seeds.size()));
-  int blocks[3];
+  std::array<int, 3> blocks{};
   for (int d = 0; d < 3; ++d) blocks[d] = std::max(1, static_cast<int>(std::ceil(block_factor * size[d] / block)));
 
   const Clock::time_point start = Clock::now();
-  voro::container con(lo.x(), hi.x(), lo.y(), hi.y(), lo.z(), hi.z(), blocks[0], blocks[1], blocks[2], false, false,
-                      false, 8);
-  voro::particle_order order;
-  for (std::size_t s = 0; s < seeds.size(); ++s) {
-    const vorocrust::Point& p = seeds[s].position;
-    if (seeds[s].region > 0) con.put(order, static_cast<int>(s), p.x(), p.y(), p.z());
-    else con.put(static_cast<int>(s), p.x(), p.y(), p.z());
-  }
-  voro::c_loop_order loop(con, order);
-  voro::voronoicell_neighbor cell;
-  std::vector<double> xyz;
-  std::vector<int> faces, ids;
-  std::size_t cells = 0;
-  if (loop.start()) {
-    do {
-      if (!con.compute_cell(cell, loop)) continue;
-      double x, y, z;
-      loop.pos(x, y, z);
-      cell.vertices(x, y, z, xyz);
-      cell.face_vertices(faces);
-      cell.neighbors(ids);
-      ++cells;
-    } while (loop.inc());
-  }
+  const std::size_t cells = vorocrust::bench::voropp_full_cells(seeds, lo, hi, blocks);
   return {cells, seconds_since(start)};
 }
 
