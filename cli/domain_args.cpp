@@ -8,9 +8,8 @@
 namespace vorocrust::cli {
 
 void DomainArgs::apply(MeshOptions& options) const {
-  options.self_intersections = self_intersections == "refuse" ? SelfIntersections::Refuse
-                               : self_intersections == "keep" ? SelfIntersections::Keep
-                                                              : SelfIntersections::Resolve;
+  // CLI11 let through only the modes it knows.
+  options.self_intersections = parse_self_intersections(self_intersections).value_or(SelfIntersections::Resolve);
   if (box.size() == 6) options.box = {box[0], box[1], box[2], box[3], box[4], box[5]};
 }
 

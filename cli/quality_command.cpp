@@ -71,13 +71,14 @@ void print_surface_table(const SurfaceQuality& q, const fs::path& surface, const
   std::printf("  input to output   %.4g\n  output to input   %.4g\n", q.input_to_output, q.output_to_input);
   if (const std::optional<double> change = q.volume_change_percent()) {
     std::printf("enclosed volume     %.6g -> %.6g (%+.2f%%)\n", *q.input_volume, *q.output_volume, *change);
-    for (const RegionVolume& r : q.region_volumes) {
-      if (q.region_volumes.size() < 2) break;
-      const std::optional<double> region_change = r.change_percent();
-      std::printf("  %-17s %s -> %s", r.name.c_str(), r.input ? number(*r.input).c_str() : "none",
-                  r.output ? number(*r.output).c_str() : "none");
-      if (region_change) std::printf(" (%+.2f%%)", *region_change);
-      std::printf("\n");
+    // One region is the whole: its line would repeat the one above.
+    if (q.region_volumes.size() > 1) {
+      for (const RegionVolume& r : q.region_volumes) {
+        std::printf("  %-17s %s -> %s", r.name.c_str(), r.input ? number(*r.input).c_str() : "none",
+                    r.output ? number(*r.output).c_str() : "none");
+        if (const std::optional<double> region_change = r.change_percent()) std::printf(" (%+.2f%%)", *region_change);
+        std::printf("\n");
+      }
     }
   }
   if (q.topology_matches) {

@@ -23,9 +23,7 @@ InteriorMode interior_named(const std::string& name) {
 }
 
 SelfIntersections self_intersections_named(const std::string& name) {
-  for (SelfIntersections mode : {SelfIntersections::Resolve, SelfIntersections::Refuse, SelfIntersections::Keep}) {
-    if (name == to_string(mode)) return mode;
-  }
+  if (const std::optional<SelfIntersections> mode = parse_self_intersections(name)) return *mode;
   throw Error(Error::Kind::Usage,
               "self_intersections must be 'resolve', 'refuse' or 'keep', got '" + name + "'");
 }

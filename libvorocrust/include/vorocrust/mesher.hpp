@@ -12,6 +12,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "vorocrust/balls.hpp"
@@ -49,6 +50,8 @@ const char* to_string(InteriorMode mode) noexcept;
 enum class SelfIntersections { Resolve, Refuse, Keep };
 
 const char* to_string(SelfIntersections mode) noexcept;
+// The mode to_string names `name`, if any.
+std::optional<SelfIntersections> parse_self_intersections(std::string_view name) noexcept;
 
 struct MeshOptions {
   double lipschitz = 0.25;  // L < 1: how fast ball radii may vary

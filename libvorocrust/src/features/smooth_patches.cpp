@@ -254,10 +254,10 @@ std::vector<bool> straying_faces(const Refinement& r, const EdgeTopology& topo, 
 
 // The kink guard, after a Loop round. Loop's stencils presume a smooth, even neighbourhood; on
 // skinny or folded input faces, or next to vertices held still, they can pull a point across its
-// neighbours and fold or spike the surface. Wherever a non-sharp edge ends up bent more than the input's worst
-// patch edge (or a face has no area), the vertices of its two faces fall back to linear
-// subdivision (midpoints, old vertices in place), which only repeats bends that were there.
-// Vertices only ever fall back, so this ends.
+// neighbours and fold or spike the surface. Wherever a non-sharp edge ends up bent more than the
+// input's worst patch edge (or a face has no area), the vertices of its two faces fall back to
+// linear subdivision (midpoints, old vertices in place), which only repeats bends that were
+// there. Vertices only ever fall back, so this ends.
 void guard_kinks(const Refinement& r, const std::vector<Point>& linear, SurfaceMesh& out) {
   const EdgeTopology out_topo = build_edge_topology(out);
   std::vector<Point>& placed = out.vertices;
@@ -436,18 +436,20 @@ std::size_t refine_once(Refinement& r, const SmoothingOptions& options, Rule rul
   }
 
   // Loop's vertex rule for the free vertices of replaced faces, over the conforming mesh's edges.
-  std::vector<bool> moves(old.size(), false);
-  for (Index f = 0; f < num_faces && rule == Rule::Loop; ++f) {
-    const std::int32_t p = r.face_pair[f];
-    if (p != kNoPair ? !upgraded[p] : split_face[f] == Split::None) continue;
-    for (Index v : mesh.triangles[f]) moves[v] = !r.fixed[v];
-  }
-  const Rings rings = rings_of(old, topo);
-  for (Index v = 0; v < old.size(); ++v) {
-    const std::size_t valence = rings.valence[v];
-    if (!moves[v] || valence == 0) continue;
-    const double beta = loop_beta(valence);
-    points[v] = (1 - static_cast<double>(valence) * beta) * old[v] + beta * rings.sum[v];
+  if (rule == Rule::Loop) {
+    std::vector<bool> moves(old.size(), false);
+    for (Index f = 0; f < num_faces; ++f) {
+      const std::int32_t p = r.face_pair[f];
+      if (p != kNoPair ? !upgraded[p] : split_face[f] == Split::None) continue;
+      for (Index v : mesh.triangles[f]) moves[v] = !r.fixed[v];
+    }
+    const Rings rings = rings_of(old, topo);
+    for (Index v = 0; v < old.size(); ++v) {
+      const std::size_t valence = rings.valence[v];
+      if (!moves[v] || valence == 0) continue;
+      const double beta = loop_beta(valence);
+      points[v] = (1 - static_cast<double>(valence) * beta) * old[v] + beta * rings.sum[v];
+    }
   }
 
   // The subdivided mesh. Children are emitted where their parent was, in its vertex order.
@@ -576,14 +578,14 @@ SmoothedSurface smooth_patches(const SurfaceMesh& mesh, const Strata& strata, co
   SmoothedSurface result;
   // First the midpoint splits that keep Loop's surface near the input, only for a smoothing that
   // has rounds of Loop's to follow them.
-  for (int round = 0; options.max_deviation > 0 && options.max_iterations > 0 && round < options.max_bounding_rounds;
-       ++round) {
+  const bool bounded = options.max_deviation > 0 && options.max_iterations > 0;
+  for (int round = 0; bounded && round < options.max_bounding_rounds; ++round) {
     const std::size_t replaced = refine_once(r, options, Rule::Midpoint);
     if (replaced == 0) break;
     ++result.bounding_rounds;
     result.faces_split += replaced;
   }
-  if (options.max_deviation > 0 && options.max_iterations > 0) {
+  if (bounded) {
     const std::vector<double> offset = limit_offsets(r, build_edge_topology(r.mesh));
     result.largest_limit_offset = offset.empty() ? 0 : *std::max_element(offset.begin(), offset.end());
   }

@@ -64,6 +64,13 @@ const char* to_string(SelfIntersections mode) noexcept {
   return "?";
 }
 
+std::optional<SelfIntersections> parse_self_intersections(std::string_view name) noexcept {
+  for (SelfIntersections mode : {SelfIntersections::Resolve, SelfIntersections::Refuse, SelfIntersections::Keep}) {
+    if (name == to_string(mode)) return mode;
+  }
+  return std::nullopt;
+}
+
 const char* to_string(InteriorMode mode) noexcept {
   switch (mode) {
     case InteriorMode::Random: return "random";

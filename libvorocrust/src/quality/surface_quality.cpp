@@ -115,7 +115,6 @@ std::vector<double> triangle_qualities(const SurfaceMesh& mesh) {
   return quality;
 }
 
-
 SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMesh& output,
                                        const QualityOptions& options) {
   options.check();

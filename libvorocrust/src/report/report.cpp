@@ -394,11 +394,10 @@ MeshOptions run_report_domain(const std::filesystem::path& report_json) {
     for (std::size_t k = 0; k < 6; ++k) (*options.box)[k] = (*box)[k].get<double>();
   }
   if (const auto mode = o.find("self_intersections"); mode != o.end()) {
-    const std::string name = mode->is_string() ? mode->get<std::string>() : "";
-    const auto known = {SelfIntersections::Resolve, SelfIntersections::Refuse, SelfIntersections::Keep};
-    const auto it = std::find_if(known.begin(), known.end(), [&](SelfIntersections m) { return name == to_string(m); });
-    if (it == known.end()) fail_on_report(report_json, "'options.self_intersections' is not resolve, refuse or keep");
-    options.self_intersections = *it;
+    const std::optional<SelfIntersections> parsed =
+        mode->is_string() ? parse_self_intersections(mode->get<std::string>()) : std::nullopt;
+    if (!parsed) fail_on_report(report_json, "'options.self_intersections' is not resolve, refuse or keep");
+    options.self_intersections = *parsed;
   }
   return options;
 }
