@@ -161,8 +161,8 @@ class SkinnyTriangles(unittest.TestCase):
 
 
 class SmoothingTolerance(unittest.TestCase):
-    """--smoothing-tolerance bounds how far smoothing moves a coarse surface from its input: the
-    faces about vertices Loop's rules would move farther are split at their midpoints first."""
+    """--smoothing-tolerance keeps a coarse surface near its input through smoothing: the faces
+    about vertices Loop's rules would move farther are split at their midpoints first."""
 
     def surface(self, out, *options):
         r = run("mesh", os.path.join(MODELS, "directional_bimba.off"), "-o", out, "--stop-after", "surface", "-q",
