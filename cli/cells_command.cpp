@@ -7,9 +7,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "cell_figures.hpp"
 #include "exit_codes.hpp"
-#include "volume_outputs.hpp"
 #include "vorocrust/vorocrust.hpp"
 
 namespace vorocrust::cli {
@@ -72,8 +70,10 @@ int run_cells(const CellsArgs& args) {
     std::printf("aspect ratio %.4g min, %.4g mean, %.4g max (cell %zu, seed %u); %zu cells above %.4g; in %.3f s\n",
                 quality.min_aspect_ratio, quality.mean_aspect_ratio, quality.max_aspect_ratio, quality.worst_cell,
                 quality.worst_seed, quality.aspect_ratio_above_high, quality.histogram_high, quality_seconds);
-    print_face_figures(quality, stdout);
-    print_volume_outputs(out, args.formats, stdout);
+    std::printf("%s\n", face_figures_line(quality).c_str());
+    std::vector<OutputFormat> formats;
+    for (const std::string& name : args.formats) formats.push_back(*parse_output_format(name));
+    for (const std::string& line : written_lines(out, formats)) std::printf("%s\n", line.c_str());
     std::printf("wrote %s, %s and %s\n", (out / "seeds.csv").c_str(), (out / "report.json").c_str(),
                 (out / "quality.svg").c_str());
   }

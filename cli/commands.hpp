@@ -5,9 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "domain_args.hpp"
-#include "vorocrust/mesher.hpp"
-#include "vorocrust/write_volume_mesh.hpp"
+#include "table_options.hpp"
 
 namespace vorocrust::cli {
 
@@ -20,12 +18,8 @@ struct InfoArgs {
 struct MeshArgs {
   std::vector<std::string> inputs;
   std::string output_dir;
-  MeshOptions options;
+  TableOptions options;  // every option of the library's table
   bool quiet = false;
-  std::string stop_after;  // "" (everything), "balls" or "surface"
-  std::string interior = "random";
-  DomainArgs domain;
-  std::vector<std::string> formats = volume_format_names();
   std::vector<std::string> command_line;
 };
 

@@ -1,25 +1,22 @@
 // The options that say what surface a run starts from (its box, its self-intersections), shared
-// by `mesh`, `check-balls` and `quality`, which must start from the same surface to check that
-// run's balls and measure its output surface.
+// by `check-balls` and `quality`, which must start from the same surface as the run whose balls
+// they check and whose surface they measure.
 #pragma once
 
 #include <filesystem>
-#include <string>
 #include <vector>
 
+#include "table_options.hpp"
 #include "vorocrust/mesher.hpp"
-
-namespace CLI {
-class App;
-}
 
 namespace vorocrust::cli {
 
 struct DomainArgs {
-  std::string self_intersections = "resolve";  // "resolve", "refuse" or "keep"
-  std::vector<double> box;                     // empty, or xmin ymin zmin xmax ymax zmax
+  TableOptions options;  // box and self_intersections, from the library's table
 
-  // Sets options.box and options.self_intersections.
+  bool given() const { return options.given("box") || options.given("self_intersections"); }
+  // Sets options.box and options.self_intersections as given; throws Error(Usage) for 'refuse',
+  // which made no run whose balls or surface there would be to check.
   void apply(MeshOptions& options) const;
 };
 
@@ -29,8 +26,7 @@ struct DomainArgs {
 // a run's balls against and what `quality` measures its surface against.
 SurfaceMesh read_domain(const std::vector<std::filesystem::path>& models, const MeshOptions& options);
 
-// --box and --self-intersections on `command`; `refuse` only where the command can stop for
-// crossing faces (`mesh`: check-balls checks balls a run made, which a refused run made none of).
-void add_domain_options(CLI::App& command, DomainArgs& args, bool refuse);
+// --box and --self-intersections on `command`.
+void add_domain_options(CLI::App& command, DomainArgs& args);
 
 }  // namespace vorocrust::cli

@@ -18,10 +18,11 @@ using namespace vorocrust::cli;
 
 constexpr const char* kVolumeFormatsHelp =
     "Volume mesh outputs, comma-separated: vtu (mesh.vtu), openfoam (case/), tough (MESH), pflotran (pflotran/: "
-    "mesh.uge, a cell list per material, boundary connections per patch)";
+    "mesh.uge, a cell list per material, boundary connections per patch); default: all";
 
 int report_error(const Error& e) {
-  std::fprintf(stderr, "vorocrust: %s: %s\n", to_string(e.kind()), e.what());
+  std::fprintf(stderr, "vorocrust: %s: %s\n", to_string(e.kind()),
+               spelled_message(e.what(), e.where().option, Spelling::Cli).c_str());
   return exit_code_for(e.kind());
 }
 
@@ -47,59 +48,7 @@ int main(int argc, char** argv) {
       ->required();
   mesh_cmd->add_option("-o,--output", mesh.output_dir, "Output folder (created if missing); report.json goes there")
       ->required();
-  mesh_cmd->add_option("--seed", mesh.options.seed, "Random seed; equal seeds give equal meshes")
-      ->capture_default_str();
-  mesh_cmd->add_option("--threads", mesh.options.threads, "Worker threads, 0 for all cores")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
-  mesh_cmd->add_option("--lipschitz", mesh.options.lipschitz, "L in (0,1): how fast ball radii may vary")
-      ->capture_default_str();
-  mesh_cmd->add_flag("--smooth", mesh.options.smooth,
-                     "The input approximates a smooth surface (a scan, a coarse tessellation of a curved shape): "
-                     "it is smoothed as one patch (boundary and non-manifold edges stay) and its features are found "
-                     "on the result, so the folds of its tessellation are not creases; the sharp angle defaults to "
-                     "60, the smoothing to 6 rounds (the paper's settings for smooth models) and the smallest "
-                     "triangle angle to 30");
-  mesh_cmd->add_option_function<double>(
-      "--sharp-angle", [&](double degrees) { mesh.options.sharp_angle_degrees = degrees; },
-      "Normal deviation in degrees (0,90) above which an edge is a sharp crease, and the most normals may turn "
-      "between co-smooth points; default 30, which keeps every crease of the shared CAD models (fandisk, joint, "
-      "bracket, hinge), or 60 with --smooth");
-  mesh_cmd->add_option("--max-size", mesh.options.max_size, "Largest allowed ball radius and cell size");
-  mesh_cmd->add_option("--sizing", mesh.options.sizing_file,
-                       "Sizing file: lines 'x y z size' ('#' comments); sizes are interpolated between the points")
-      ->check(CLI::ExistingFile);
-  mesh_cmd->add_option_function<int>(
-      "--smoothing-iterations", [&](int rounds) { mesh.options.smoothing_iterations = rounds; },
-      "Rounds of adaptive Loop subdivision inside smooth patches before refinement; default 0, or 6 with --smooth");
-  mesh_cmd->add_option("--smoothing-tolerance", mesh.options.smoothing_tolerance,
-                       "How far smoothing should move the surface at most, as a fraction of the input's "
-                       "bounding-box diagonal (a target): faces around a vertex Loop's rules would move farther are "
-                       "first split at their midpoints, at most twice; 0: Loop's rules alone")
-      ->capture_default_str();
-  mesh_cmd->add_option_function<double>(
-      "--min-triangle-angle", [&](double degrees) { mesh.options.min_triangle_angle_degrees = degrees; },
-      "Split surface triangles away from features with an angle below this (degrees, 0 to 30; 0: none) by "
-      "shrinking the balls that cover their circumcentres; default 0, or 30 with --smooth");
-  add_domain_options(*mesh_cmd, mesh.domain, /*refuse=*/true);
-  mesh_cmd->add_option("--interior", mesh.interior,
-                       "Interior seeds: 'random' (Poisson-disk, graded from the surface inward), 'lattice' "
-                       "(cubic, hex-dominant cells), 'cvt' (random, then Lloyd iterations)")
-      ->check(CLI::IsMember({"random", "lattice", "cvt"}))
-      ->capture_default_str();
-  mesh_cmd->add_option("--cvt-iterations", mesh.options.cvt_iterations, "Lloyd iterations of --interior cvt")
-      ->capture_default_str();
-  mesh_cmd->add_option("--max-aspect-ratio", mesh.options.max_aspect_ratio,
-                       "Split cells whose aspect ratio (enclosing sphere over inscribed ball) exceeds this with a "
-                       "seed at their centroid, for at most 2 rounds; 0: none, else at least 3")
-      ->capture_default_str();
-  mesh_cmd->add_option("--format", mesh.formats, kVolumeFormatsHelp)
-      ->delimiter(',')
-      ->check(CLI::IsMember(volume_format_names()))
-      ->capture_default_str();
-  mesh_cmd->add_option("--stop-after", mesh.stop_after, "Stop after a stage and write its output: 'balls' (balls.csv, balls.vtk) or 'surface' "
-                       "(also seeds.csv, surface.obj, surface.ply)")
-      ->check(CLI::IsMember({"balls", "surface"}));
+  mesh.options.add(*mesh_cmd);
   mesh_cmd->add_flag("-q,--quiet", mesh.quiet, "Print nothing but errors");
 
   CheckBallsArgs check;
@@ -125,7 +74,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   check_cmd->add_option("--seed", check.seed, "Seed of the random samples")->capture_default_str();
   check_cmd->add_flag("--json", check.json, "Print one JSON object instead of text");
-  add_domain_options(*check_cmd, check.domain, /*refuse=*/false);
+  add_domain_options(*check_cmd, check.domain);
 
   QualityArgs quality;
   CLI::App* quality_cmd = app.add_subcommand(
@@ -139,7 +88,7 @@ int main(int argc, char** argv) {
                           "Random points per surface for the Hausdorff distance, on top of vertices and edge midpoints")
       ->capture_default_str();
   quality_cmd->add_option("--seed", quality.options.seed, "Seed of the random points")->capture_default_str();
-  add_domain_options(*quality_cmd, quality.domain, /*refuse=*/false);
+  add_domain_options(*quality_cmd, quality.domain);
   quality_cmd->add_flag("--json", quality.json, "Print one JSON object instead of text");
 
   CellsArgs cells;
@@ -178,10 +127,7 @@ int main(int argc, char** argv) {
   try {
     if (*info_cmd) return run_info(info);
     if (*check_cmd) return run_check_balls(check);
-    if (*quality_cmd) {
-      quality.domain_given = quality_cmd->count("--box") + quality_cmd->count("--self-intersections") > 0;
-      return run_quality(quality);
-    }
+    if (*quality_cmd) return run_quality(quality);
     if (*cells_cmd) return run_cells(cells);
     mesh.command_line.assign(argv, argv + argc);
     return run_mesh(mesh);

@@ -6,7 +6,6 @@
 #include <optional>
 #include <utility>
 
-#include "cell_figures.hpp"
 #include "exit_codes.hpp"
 #include "vorocrust/vorocrust.hpp"
 
@@ -98,7 +97,7 @@ void print_cell_table(const CellQuality& q, const fs::path& seeds, std::size_t s
   std::printf("faces per cell      min %zu, mean %.2f, max %zu\n", q.min_faces, q.mean_faces, q.max_faces);
   std::printf("shortest edge       min %.4g, mean %.4g of the cube root of the cell volume (cell %zu)\n",
               q.min_shortest_edge_relative, q.mean_shortest_edge_relative, q.shortest_edge_cell);
-  print_face_figures(q, stdout);
+  std::printf("%s\n", face_figures_line(q).c_str());
 }
 
 // The cells of OUTDIR/seeds.csv, rebuilt (compute_cells is deterministic, so they are the cells the
@@ -134,7 +133,7 @@ int run_quality(const QualityArgs& args) {
   if (has_surface) {
     inputs = input_paths(args, out);
     MeshOptions run;
-    if (args.domain_given || !fs::exists(out / "report.json")) args.domain.apply(run);
+    if (args.domain.given() || !fs::exists(out / "report.json")) args.domain.apply(run);
     else run = run_report_domain(out / "report.json");
     const SurfaceMesh input = read_domain(inputs, run);
     const SurfaceMesh output = read_mesh(surface);

@@ -24,9 +24,8 @@ struct QualityArgs {
   std::vector<std::string> inputs;  // empty: the `inputs` of OUTDIR/report.json
   QualityOptions options;
   // The surface the run started from, the inputs in their box and cut as the run cut them: these
-  // options when given (domain_given), else those OUTDIR/report.json records, else mesh's defaults.
+  // options when given, else those OUTDIR/report.json records, else mesh's defaults.
   DomainArgs domain;
-  bool domain_given = false;
   bool json = false;
 };
 

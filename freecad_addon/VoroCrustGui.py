@@ -39,10 +39,86 @@ def report_error(error):
     App.Console.PrintError("VoroCrust: %s\n" % error)
 
 
-def _format_boxes(layout, chosen):
+def _spec(name):
+    return next(o for o in VoroCrustMesher.OPTIONS if o["name"] == name)
+
+
+def _remembered(p, o):
+    """An option's value as the preferences remember it (under its property name), or its
+    default; numbers as the widgets hold them (unset as the table's unset_number)."""
+    key, default = o["freecad"], VoroCrustMesher.property_value(o, o["default"])
+    if o["kind"] == "flag":
+        return p.GetBool(key, default)
+    if o["kind"] == "integer":
+        return p.GetInt(key, default)
+    if o["kind"] == "real":
+        return p.GetFloat(key, default)
+    return p.GetString(key, default)
+
+
+def _remember_value(p, o, value):
+    key = o["freecad"]
+    if o["kind"] == "flag":
+        p.SetBool(key, value)
+    elif o["kind"] == "integer":
+        p.SetInt(key, value)
+    elif o["kind"] == "real":
+        p.SetFloat(key, value)
+    else:
+        p.SetString(key, value)
+
+
+def _option_widget(o, value):
+    """The widget of an option: a check box, a spin box (its lowest value "auto" or "none" where
+    the option may be unset), a list of choices, or a line for a file or the box."""
+    tip = VoroCrustMesher.option_help(o)
+    if o["kind"] == "flag":
+        widget = QtGui.QCheckBox()
+        widget.setChecked(bool(value))
+    elif o["kind"] in ("integer", "real"):
+        widget = QtGui.QSpinBox() if o["kind"] == "integer" else QtGui.QDoubleSpinBox()
+        limit = 2 ** 31 - 1 if o["kind"] == "integer" else 1e9
+        low = o["min"] if o["min"] is not None else -limit
+        high = o["max"] if o["max"] is not None else limit
+        if o["also"] is not None:
+            low = min(low, o["also"])
+        if o["unset_number"] is not None:
+            low = o["unset_number"]
+            widget.setSpecialValueText("auto: " + o["default_text"].split(": ", 1)[1])
+        if o["kind"] == "integer":
+            widget.setRange(int(low), int(high))
+        else:
+            widget.setDecimals(6)
+            widget.setRange(low, high)
+            widget.setSingleStep(0.05 if high <= 1 else 1)
+        widget.setValue(value)
+    elif o["kind"] == "choice":
+        widget = QtGui.QComboBox()
+        widget.addItems(list(o["choices"]))
+        widget.setCurrentText(value)
+    else:
+        widget = QtGui.QLineEdit(value)
+        widget.setPlaceholderText("auto: " + o["default_text"].split(": ", 1)[1])
+    widget.setToolTip(tip)
+    return widget
+
+
+def _widget_value(widget):
+    if isinstance(widget, QtGui.QCheckBox):
+        return widget.isChecked()
+    if isinstance(widget, (QtGui.QSpinBox, QtGui.QDoubleSpinBox)):
+        return widget.value()
+    if isinstance(widget, QtGui.QComboBox):
+        return widget.currentText()
+    return widget.text()
+
+
+def _format_boxes(layout, chosen, with_report=True):
     """A check box per format, the files it makes in its label; returns {format: box}."""
     boxes = {}
     for name, files in VoroCrustMesher.FORMATS.items():
+        if name == "report" and not with_report:
+            continue
         box = QtGui.QCheckBox("%s (%s)" % (name, ", ".join(files)))
         box.setChecked(name in chosen)
         layout.addWidget(box)
@@ -97,73 +173,38 @@ class VoronoiMeshPanel:
         layout.addWidget(inputs)
         grid = QtGui.QFormLayout()
         layout.addLayout(grid)
-
-        def spin(value, low, high, step, decimals, tip):
-            box = QtGui.QDoubleSpinBox()
-            box.setRange(low, high)
-            box.setDecimals(decimals)
-            box.setSingleStep(step)
-            box.setValue(value)
-            box.setToolTip(tip)
-            return box
-
-        self.tolerance = spin(p.GetFloat("Tolerance", 0.1), 1e-4, 1e6, 0.05, 4,
-                              "Largest distance between a Part shape and its triangles")
-        defaults = VoroCrustMesher.Parameters()
-        self.lipschitz = spin(p.GetFloat("Lipschitz", defaults.lipschitz), 0.01, 0.99, 0.05, 2,
-                              "L: how fast ball radii may vary")
-        self.sharp_angle = spin(p.GetFloat("SharpAngle", vorocrust.DEFAULT_OPTIONS["sharp_angle"]), 1, 89, 1, 1,
-                                "Normal deviation in degrees above which an edge is a sharp crease")
-        self.smooth = QtGui.QCheckBox("Smooth surface")
-        self.smooth.setChecked(p.GetBool("Smooth", defaults.smooth))
-        self.smooth.setToolTip("The input approximates a smooth surface (a scan, a coarse tessellation of a curved "
-                               "shape): it is smoothed by Loop subdivision as one patch and its creases are found on "
-                               "the result, so the folds of its tessellation are none; most surface triangles away "
-                               "from creases with an angle below 30 degrees are split")
-        self.smooth.toggled.connect(self._smooth_toggled)
-        self.max_size = spin(p.GetFloat("MaxSize", 0.0), 0, 1e9, 1, 4, "Largest ball radius and cell size")
-        self.max_size.setSpecialValueText("no bound")
-        self.interior = QtGui.QComboBox()
-        self.interior.addItems(list(vorocrust.INTERIOR_MODES))
-        self.interior.setCurrentText(p.GetString("Interior", defaults.interior))
-        self.interior.setToolTip("How the volume away from the surface is seeded: random (graded from the surface "
-                                 "inward), lattice (hex-dominant cells), cvt (random, then Lloyd iterations)")
-        self.cvt_iterations = QtGui.QSpinBox()
-        self.cvt_iterations.setRange(0, 10000)
-        self.cvt_iterations.setValue(p.GetInt("CvtIterations", defaults.cvt_iterations))
-        self.cvt_iterations.setToolTip("Lloyd iterations of the cvt interior")
+        self.tolerance = QtGui.QDoubleSpinBox()
+        self.tolerance.setRange(1e-4, 1e6)
+        self.tolerance.setDecimals(4)
+        self.tolerance.setSingleStep(0.05)
+        self.tolerance.setValue(p.GetFloat("Tolerance", 0.1))
+        self.tolerance.setToolTip("Largest distance between a Part shape and its triangles")
+        grid.addRow("Tessellation tolerance", self.tolerance)
+        # One widget per option of the library's table, grouped as it groups them; each is also
+        # an attribute of the panel under the option's name (self.sharp_angle).
+        self.widgets = {}
+        self._inputs = [self.tolerance]
+        for o in VoroCrustMesher.OPTIONS:
+            if o["name"] == "formats":
+                continue
+            widget = _option_widget(o, _remembered(p, o))
+            self.widgets[o["name"]] = widget
+            setattr(self, o["name"], widget)
+            label = o["label"] + (" (%s)" % o["unit"] if o["unit"] else "")
+            grid.addRow(label, widget)
+            self._inputs.append(widget)
         self.cvt_iterations.setEnabled(self.interior.currentText() == "cvt")
         self.interior.currentTextChanged.connect(lambda mode: self.cvt_iterations.setEnabled(mode == "cvt"))
-        self.max_aspect_ratio = spin(p.GetFloat("MaxAspectRatio", defaults.max_aspect_ratio), 0, 1000, 0.5, 2,
-                                     "Cells whose aspect ratio (enclosing sphere over inscribed ball) exceeds this "
-                                     "get a seed at their centroid, for at most two rounds; 0 splits none, else at "
-                                     "least 3")
-        self.max_aspect_ratio.setSpecialValueText("no splits")
-        self.seed = QtGui.QSpinBox()
-        self.seed.setRange(0, 2**31 - 1)
-        self.seed.setValue(p.GetInt("Seed", defaults.seed))
-        self.seed.setToolTip("Random seed: equal input, parameters and seed give equal meshes")
-        self.stop_after = QtGui.QComboBox()
-        self.stop_after.addItems(list(VoroCrustMesher.STAGES))
-        self.stop_after.setCurrentText(p.GetString("StopAfter", defaults.stop_after))
-        self.stop_after.setToolTip("cells: the whole mesh; surface: the surface seeds and surface (the volume "
-                                   "files then hold the cells of the surface seeds)")
-        for label, widget in (("Tessellation tolerance", self.tolerance), ("Lipschitz L", self.lipschitz),
-                              ("Surface", self.smooth), ("Sharp angle", self.sharp_angle),
-                              ("Maximum size", self.max_size),
-                              ("Interior", self.interior), ("CVT iterations", self.cvt_iterations),
-                              ("Largest aspect ratio", self.max_aspect_ratio), ("Seed", self.seed),
-                              ("Stop after", self.stop_after)):
-            grid.addRow(label, widget)
 
         folder_row, self.folder = _folder_row(p.GetString("OutputFolder", "") or
                                               VoroCrustMesher.default_output_dir(self.doc))
         grid.addRow("Output folder", folder_row)
-        formats = QtGui.QGroupBox("Outputs")
+        formats = QtGui.QGroupBox("Outputs (report.json is always written)")
         formats_layout = QtGui.QVBoxLayout(formats)
         chosen = p.GetString("Formats", ",".join(VoroCrustMesher.DEFAULT_FORMATS)).split(",")
-        self.formats = _format_boxes(formats_layout, chosen)
+        self.formats = _format_boxes(formats_layout, chosen, with_report=False)
         layout.addWidget(formats)
+        self._inputs += [folder_row, formats]
 
         self.progress = QtGui.QProgressBar()
         self.progress.setRange(0, 100)
@@ -172,27 +213,13 @@ class VoronoiMeshPanel:
         self.status.setWordWrap(True)
         layout.addWidget(self.progress)
         layout.addWidget(self.status)
-        self._inputs = [self.tolerance, self.lipschitz, self.smooth, self.sharp_angle, self.max_size, self.interior,
-                        self.max_aspect_ratio, self.seed,
-                        self.stop_after, folder_row, formats]  # the CVT box follows the interior mode
         return form
 
     def parameters(self):
         """The parameters as the panel shows them."""
-        return VoroCrustMesher.Parameters(
-            lipschitz=self.lipschitz.value(), smooth=self.smooth.isChecked(), sharp_angle=self.sharp_angle.value(),
-            max_size=self.max_size.value(),
-            interior=self.interior.currentText(), cvt_iterations=self.cvt_iterations.value(),
-            max_aspect_ratio=self.max_aspect_ratio.value(), seed=self.seed.value(),
-            tolerance=self.tolerance.value(), stop_after=self.stop_after.currentText())
-
-    def _smooth_toggled(self, smooth):
-        # The paper's sharp angle for smooth models is 60 degrees; a value the user chose stays.
-        defaults = vorocrust.DEFAULT_OPTIONS
-        old, new = ((defaults["sharp_angle"], defaults["smooth_sharp_angle"]) if smooth
-                    else (defaults["smooth_sharp_angle"], defaults["sharp_angle"]))
-        if self.sharp_angle.value() == old:
-            self.sharp_angle.setValue(new)
+        options = {name: VoroCrustMesher.option_value(_spec(name), _widget_value(widget))
+                   for name, widget in self.widgets.items()}
+        return VoroCrustMesher.Parameters(self.tolerance.value(), **options)
 
     def chosen_formats(self):
         return [name for name, box in self.formats.items() if box.isChecked()]
@@ -200,15 +227,8 @@ class VoronoiMeshPanel:
     def _remember(self, parameters):
         p = preferences()
         p.SetFloat("Tolerance", parameters.tolerance)
-        p.SetFloat("Lipschitz", parameters.lipschitz)
-        p.SetBool("Smooth", parameters.smooth)
-        p.SetFloat("SharpAngle", parameters.sharp_angle)
-        p.SetFloat("MaxSize", parameters.max_size)
-        p.SetString("Interior", parameters.interior)
-        p.SetInt("CvtIterations", parameters.cvt_iterations)
-        p.SetFloat("MaxAspectRatio", parameters.max_aspect_ratio)
-        p.SetInt("Seed", parameters.seed)
-        p.SetString("StopAfter", parameters.stop_after)
+        for name, widget in self.widgets.items():
+            _remember_value(p, _spec(name), _widget_value(widget))
         p.SetString("OutputFolder", self.folder.text())
         p.SetString("Formats", ",".join(self.chosen_formats()))
 
@@ -232,7 +252,8 @@ class VoronoiMeshPanel:
             return False
         self._cancel = False
         self._state = {"phase": "starting", "fraction": None, "done": False}
-        self._worker = threading.Thread(target=self._work, args=(model, parameters), daemon=True)
+        self._worker = threading.Thread(target=self._work, args=(model, parameters, self.folder.text(),
+                                                                 self.chosen_formats()), daemon=True)
         self._set_inputs_enabled(False)
         self.status.setText("Meshing...")
         self._worker.start()
@@ -247,10 +268,11 @@ class VoronoiMeshPanel:
             return False
         return True
 
-    def _work(self, model, parameters):
-        # The worker thread: only the library runs here, no FreeCAD object is touched.
+    def _work(self, model, parameters, folder, formats):
+        # The worker thread: only the library runs here (meshing, writing the files), no FreeCAD
+        # object is touched.
         try:
-            self._state["result"] = VoroCrustMesher.run(model, parameters, self._progress)
+            self._state["result"] = VoroCrustMesher.run(model, parameters, folder, formats, self._progress)
             self._state["parameters"] = parameters
         except BaseException as e:  # handed to the GUI thread, which reports it
             self._state["error"] = e

@@ -17,7 +17,6 @@ interface between them. Part solids that touch are imprinted on each other first
 fuse) and tessellated once, so that their common faces have one triangulation.
 """
 
-import dataclasses
 import os
 import shutil
 import tempfile
@@ -28,45 +27,91 @@ import numpy as np
 import vorocrust
 
 #: What the panel and voronoi_mesh() can write, by format name: the module's formats, so
-#: formats the library gains appear here by themselves.
+#: formats the library gains appear here by themselves. report.json is always written.
 FORMATS = dict(vorocrust.OUTPUT_FORMATS)
 #: Written when nothing else is asked for: the volume mesh and the compact seeds.
 DEFAULT_FORMATS = ("vtu", "openfoam", "tough", "pflotran", "seeds", "ply")
-#: Stages the run can stop after; "cells" is the whole mesh.
-STAGES = ("surface", "cells")
+#: The options of a run: the library's table (vorocrust.OPTIONS), in its order, as the workbench
+#: offers them; the panel, the object's properties and Parameters are made from it.
+OPTIONS = [o for o in vorocrust.OPTIONS if "freecad" in o["front_ends"]]
+#: The FreeCAD property type of each kind of option.
+PROPERTY_TYPES = {"flag": "App::PropertyBool", "integer": "App::PropertyInteger", "real": "App::PropertyFloat",
+                  "choice": "App::PropertyEnumeration", "choices": "App::PropertyStringList",
+                  "file": "App::PropertyFile", "box": "App::PropertyString"}
 
 
-@dataclasses.dataclass
+def option_help(o):
+    """An option's help with its default and range, as the table gives them."""
+    text = o["help"] + (" (paper %s)" % o["section"] if o["section"] else "")
+    text += ". " + o["default_text"][0].upper() + o["default_text"][1:]
+    if o["unset_number"] is not None:
+        text += " (%g here)" % o["unset_number"]
+    if o["kind"] != "flag":
+        text += "; range: " + o["range_text"]
+    return text + "."
+
+
+def property_value(o, value):
+    """An option's value as its property holds it: unset as the table's unset_number (or an
+    empty text), a box as six numbers in a text, formats as a list."""
+    if value is None:
+        if o["unset_number"] is not None:
+            return int(o["unset_number"]) if o["kind"] == "integer" else float(o["unset_number"])
+        return [] if o["kind"] == "choices" else ""
+    if o["kind"] == "box":
+        return " ".join("%r" % float(x) for x in value)
+    if o["kind"] == "choices":
+        return list(value)
+    return value
+
+
+def option_value(o, value):
+    """The inverse of property_value: a widget's or property's value as mesh() takes it."""
+    if o["unset_number"] is not None and value == o["unset_number"]:
+        return None
+    if o["kind"] in ("box", "file"):
+        text = str(value).strip()
+        if not text:
+            return None
+        return tuple(float(x) for x in text.replace(",", " ").split()) if o["kind"] == "box" else text
+    return value
+
+
 class Parameters:
-    """The options of a run, as `vorocrust mesh` has them (see vorocrust.mesh()), plus the
-    tessellation tolerance of Part shapes.
+    """The options of a run, by their names in vorocrust.OPTIONS (as vorocrust.mesh() takes
+    them), and the tessellation tolerance of Part shapes: the largest distance (model units)
+    between a Part shape and its triangles. An option not given keeps the library's default; a
+    number equal to the table's unset_number (a panel's "auto") leaves it unset.
 
-    tolerance: largest distance (model units) between a Part shape and its triangles.
-    max_size: largest ball radius and cell size; 0 for no bound.
-    stop_after: "cells" for the whole mesh, "surface" for the surface seeds and surface (the
-        volume formats are then the cells of the surface seeds alone, as `vorocrust cells
-        seeds.csv` builds them).
+        Parameters(max_size=2, seed=7, smooth=True)
     """
 
-    lipschitz: float = vorocrust.DEFAULT_OPTIONS["lipschitz"]
-    smooth: bool = vorocrust.DEFAULT_OPTIONS["smooth"]
-    sharp_angle: float = None  # None: the mode's default (vorocrust.mesh())
-    max_size: float = 0.0
-    interior: str = vorocrust.DEFAULT_OPTIONS["interior"]
-    cvt_iterations: int = vorocrust.DEFAULT_OPTIONS["cvt_iterations"]
-    max_aspect_ratio: float = vorocrust.DEFAULT_OPTIONS["max_aspect_ratio"]
-    seed: int = vorocrust.DEFAULT_OPTIONS["seed"]
-    tolerance: float = 0.1
-    stop_after: str = vorocrust.DEFAULT_OPTIONS["stop_after"]
-    threads: int = vorocrust.DEFAULT_OPTIONS["threads"]
+    def __init__(self, tolerance=0.1, **options):
+        known = {o["name"]: o for o in OPTIONS}
+        unknown = sorted(set(options) - set(known))
+        if unknown:
+            raise vorocrust.UsageError("unknown option %s: the options are %s" % (
+                ", ".join(unknown), ", ".join(known)))
+        self.tolerance = tolerance
+        self.options = {name: option_value(known[name], value) for name, value in options.items()}
+
+    def __getattr__(self, name):
+        if name in ("tolerance", "options"):
+            raise AttributeError(name)
+        if name in self.options:
+            return self.options[name]
+        if name in vorocrust.DEFAULT_OPTIONS:
+            return vorocrust.DEFAULT_OPTIONS[name]
+        raise AttributeError(name)
+
+    def replace(self, **changes):
+        """A copy with some options (or the tolerance) changed."""
+        tolerance = changes.pop("tolerance", self.tolerance)
+        return Parameters(tolerance, **dict(self.options, **changes))
 
     def mesh_options(self):
         """The keyword arguments of vorocrust.mesh()."""
-        return dict(lipschitz=self.lipschitz, smooth=self.smooth, sharp_angle=self.sharp_angle,
-                    max_size=self.max_size if self.max_size > 0 else None, interior=self.interior,
-                    cvt_iterations=self.cvt_iterations, max_aspect_ratio=self.max_aspect_ratio,
-                    stop_after=self.stop_after, seed=self.seed,
-                    threads=self.threads)
+        return dict(self.options)
 
 
 def is_meshable(obj):
@@ -157,29 +202,22 @@ def model_of(objects, tolerance):
     return vorocrust.merge_surfaces(model_parts(objects, tolerance))
 
 
-def run(model, parameters, progress=None):
-    """Meshes a vorocrust.Surface: vorocrust.mesh() with the parameters. Touches no FreeCAD
-    object, so it may run in a worker thread while FreeCAD's window goes on."""
-    return vorocrust.mesh(model, progress=progress, **parameters.mesh_options())
+def run(model, parameters, output_dir=None, formats=DEFAULT_FORMATS, progress=None):
+    """Meshes a vorocrust.Surface: the library's job (vorocrust.mesh()) with the parameters,
+    writing `formats` and report.json into output_dir. Touches no FreeCAD object, so it may run
+    in a worker thread while FreeCAD's window goes on."""
+    unknown = [f for f in formats if f not in FORMATS]
+    if unknown:
+        raise vorocrust.UsageError("unknown output format %s: expected some of %s" % (
+            ", ".join(map(repr, unknown)), ", ".join(FORMATS)))
+    options = parameters.mesh_options()
+    options["formats"] = [f for f in formats if f != "report"]
+    return vorocrust.mesh(model, output_dir=output_dir, progress=progress, **options)
 
 
-def cells_of(result):
-    """The volume mesh of a run: its cells, or for a run that stopped after the surface the
-    cells of its surface seeds."""
-    return result.cells if result.cells is not None else vorocrust.compute_cells(result.seeds)
-
-
-def needs_cells(formats):
-    """True when `formats` hold a volume format."""
-    return any(f in vorocrust.VOLUME_FORMATS for f in formats)
-
-
-def write_results(result, folder, formats, cells=None):
-    """Writes the run's files in `formats` into `folder` (the volume formats from `cells`, by
-    default cells_of(result)); returns their paths."""
-    if cells is None and needs_cells(formats):
-        cells = cells_of(result)
-    return vorocrust.write_outputs(result, folder, list(formats), cells=cells)
+def write_results(result, folder, formats):
+    """Writes the run's files in `formats` into `folder` again; returns their paths."""
+    return vorocrust.write_outputs(result, folder, list(formats))
 
 
 def default_output_dir(doc):
@@ -203,7 +241,8 @@ def log_progress():
 
 
 def voronoi_mesh(objects, parameters=None, output_dir=None, formats=DEFAULT_FORMATS, doc=None, progress=None):
-    """Meshes Mesh objects and Part solids and adds the result to their document.
+    """Meshes Mesh objects and Part solids, writes the files and adds the result to their
+    document.
 
     parameters: a Parameters (defaults when None).
     output_dir: where the files go (default_output_dir() when None).
@@ -218,24 +257,19 @@ def voronoi_mesh(objects, parameters=None, output_dir=None, formats=DEFAULT_FORM
     parameters = parameters or Parameters()
     objects = list(objects)
     doc = doc or (objects[0].Document if objects else App.ActiveDocument)
+    output_dir = output_dir or default_output_dir(doc)
     model = model_of(objects, parameters.tolerance)
-    result = run(model, parameters, progress or log_progress())
-    return add_result(doc, objects, parameters, result, output_dir or default_output_dir(doc), formats)
+    result = run(model, parameters, output_dir, formats, progress or log_progress())
+    return add_result(doc, objects, parameters, result, output_dir, formats)
 
 
 def add_result(doc, objects, parameters, result, output_dir, formats):
-    """Writes a finished run's files and adds its objects to `doc` in one undoable step."""
-    unknown = [f for f in formats if f not in FORMATS]
-    if unknown:
-        raise vorocrust.UsageError("unknown output format %s: expected some of %s" % (
-            ", ".join(map(repr, unknown)), ", ".join(FORMATS)))
-    cells = cells_of(result) if needs_cells(formats) or result.cells is not None else None
-    written = write_results(result, output_dir, formats, cells)
+    """Adds a finished run's objects to `doc` in one undoable step, and says what it wrote."""
     doc.openTransaction("Voronoi mesh")
     try:
         obj = doc.addObject("App::DocumentObjectGroupPython", "VoronoiMesh")
         VoronoiMeshResult(obj)
-        obj.Proxy.set_result(obj, objects, parameters, result, cells, output_dir, formats)
+        obj.Proxy.set_result(obj, objects, parameters, result, output_dir, formats)
         if App.GuiUp:
             import VoroCrustGui
 
@@ -245,8 +279,10 @@ def add_result(doc, objects, parameters, result, output_dir, formats):
         doc.abortTransaction()
         raise
     doc.commitTransaction()
-    for path in written:
-        App.Console.PrintMessage("VoroCrust: wrote %s\n" % path)
+    for line in result.summary:
+        App.Console.PrintMessage("VoroCrust: %s\n" % line)
+    for path in result.written:
+        App.Console.PrintLog("VoroCrust: wrote %s\n" % path)
     return obj
 
 
@@ -290,16 +326,13 @@ class VoronoiMeshResult:
         add = obj.addProperty
         add("App::PropertyLinkList", "Sources", "Input", "The Mesh objects and Part solids meshed")
         add("App::PropertyFloat", "Tolerance", "Input", "Tessellation tolerance of Part shapes")
-        add("App::PropertyFloat", "Lipschitz", "Parameters", "L: how fast ball radii may vary")
-        add("App::PropertyBool", "Smooth", "Parameters", "The input is a smooth surface: smoothed, then its creases found")
-        add("App::PropertyFloat", "SharpAngle", "Parameters", "Normal deviation (degrees) above which an edge is sharp")
-        add("App::PropertyFloat", "MaxSize", "Parameters", "Largest ball radius and cell size (0: no bound)")
-        add("App::PropertyString", "Interior", "Parameters", "How the volume is seeded: random, lattice or cvt")
-        add("App::PropertyInteger", "CvtIterations", "Parameters", "Lloyd iterations of the cvt interior")
-        add("App::PropertyFloat", "MaxAspectRatio", "Parameters",
-            "Cells of a larger aspect ratio were split at their centroids (0: none)")
-        add("App::PropertyInteger", "Seed", "Parameters", "Random seed")
-        add("App::PropertyString", "StopAfter", "Parameters", "The last stage run: surface or cells")
+        for o in OPTIONS:
+            if o["name"] == "formats":
+                continue  # the Formats property below says what was written
+            add(PROPERTY_TYPES[o["kind"]], o["freecad"], "Options: " + o["group"], option_help(o))
+            if o["kind"] == "choice":
+                setattr(obj, o["freecad"], list(o["choices"]))
+            setattr(obj, o["freecad"], property_value(o, o["default"]))
         add("App::PropertyPath", "OutputFolder", "Output", "Where the files were written")
         add("App::PropertyStringList", "Formats", "Output", "The formats written")
         add("App::PropertyFileIncluded", "SeedsFile", "Output", "The seeds (seeds.csv), kept in the document")
@@ -315,22 +348,17 @@ class VoronoiMeshResult:
                      "TopologyMatches"):
             obj.setEditorMode(name, 1)  # read-only
 
-    def set_result(self, obj, objects, parameters, result, cells, output_dir, formats):
-        """Fills the object from a finished run and its volume mesh (None when none was made)
-        and adds its surfaces and seeds as children."""
+    def set_result(self, obj, objects, parameters, result, output_dir, formats):
+        """Fills the object from a finished run (the options in force, its figures) and adds its
+        surfaces and seeds as children."""
         self._result = result
         doc = obj.Document
         obj.Sources = list(objects)
         obj.Tolerance = parameters.tolerance
-        obj.Lipschitz = parameters.lipschitz
-        obj.Smooth = parameters.smooth
-        obj.SharpAngle = result.report()["options"]["sharp_angle_degrees"]  # the angle in force
-        obj.MaxSize = parameters.max_size
-        obj.Interior = parameters.interior
-        obj.CvtIterations = parameters.cvt_iterations
-        obj.MaxAspectRatio = parameters.max_aspect_ratio
-        obj.Seed = parameters.seed
-        obj.StopAfter = result.stop_after
+        in_force = result.options  # an unset default resolved: the sharp angle of the mode
+        for o in OPTIONS:
+            if o["name"] != "formats":
+                setattr(obj, o["freecad"], property_value(o, in_force[o["name"]]))
         obj.OutputFolder = output_dir
         obj.Formats = list(formats)
         staging = tempfile.mkdtemp(prefix="vorocrust-freecad-")
@@ -347,9 +375,9 @@ class VoronoiMeshResult:
         obj.QualityMin = quality["triangle_quality"]["min"]
         obj.HausdorffPercent = quality["hausdorff"]["percent_of_bounding_box_diagonal"]
         obj.TopologyMatches = quality["topology"]["matches"]
-        if cells is not None:
-            obj.CellCount = cells.num_cells
-            obj.Volume = float(cells.volumes.sum())
+        if result.cells is not None:
+            obj.CellCount = result.cells.num_cells
+            obj.Volume = float(result.cells.volumes.sum())
 
         for region, name, vertices, triangles in material_surfaces(result.surface):
             surface = doc.addObject("Mesh::Feature", "VoronoiSurface")
@@ -403,4 +431,4 @@ def export_result(obj, folder, formats):
         raise vorocrust.UsageError("%s: only the run itself has these; the document keeps its seeds and surface "
                                    "(run Voronoi mesh again for them)" % ", ".join(unavailable))
     return vorocrust.write_files(folder, list(formats), seeds=seeds, surface=surface,
-                                 cells=vorocrust.compute_cells(seeds) if needs_cells(formats) else None)
+                                 cells=vorocrust.compute_cells(seeds) if any(f in vorocrust.VOLUME_FORMATS for f in formats) else None)

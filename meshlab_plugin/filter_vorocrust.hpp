@@ -1,7 +1,8 @@
 // filter_vorocrust — the VoroCrust filters for MeshLab 2020.09.
 //
-// A thin adapter: it turns MeshLab layers into a vorocrust::SurfaceMesh (layers_to_surface.hpp),
-// validates it and calls vorocrust::generate_mesh with the filter's parameters, and turns the
+// A thin adapter: its parameters are the library's option table (option_parameters.hpp); it turns
+// MeshLab layers into a vorocrust::SurfaceMesh (layers_to_surface.hpp), runs the library's job
+// (vorocrust::run_job: validation, meshing, the files asked for, report.json) and turns the
 // result back into layers (result_layers.hpp). It holds no meshing code of its own.
 //
 // Both filters sit in "Filters > Remeshing, Simplification and Reconstruction":
@@ -15,6 +16,8 @@
 #pragma once
 
 #include <common/interfaces.h>
+
+#include "vorocrust/job.hpp"
 
 class FilterVoroCrustPlugin : public QObject, public MeshFilterInterface {
   Q_OBJECT
@@ -40,6 +43,8 @@ class FilterVoroCrustPlugin : public QObject, public MeshFilterInterface {
                    vcg::CallBackPos* cb) override;
 
  private:
+  // Runs the job, logging its warnings and summary.
+  vorocrust::JobResult run(const vorocrust::Job& job, vcg::CallBackPos* cb);
   void protecting_balls(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
   void voronoi_mesh(MeshDocument& md, const RichParameterList& parameters, vcg::CallBackPos* cb);
   // Sets errorMessage (as HTML: MeshLab's window shows it as rich text), logs it, returns false.

@@ -85,14 +85,10 @@ struct Cells {
   py::object face_points, face_offsets, cell_faces, cell_face_offsets;
 };
 
-// One run of the pipeline with everything report.json says about it.
+// One job (run_job) with everything report.json says about it.
 struct Run {
-  std::vector<std::string> inputs;
-  MeshOptions options;
-  SurfaceMesh input;  // as validated, orientation fixed
-  MeshInfo info;
-  ValidationReport validation;
-  MeshResult result;
+  Job job;
+  JobResult result;
 };
 
 // The model a front end was given: a Surface, a path or a list of paths (read and merged), or a

@@ -1,4 +1,5 @@
-// The whole pipeline from Python: vorocrust.mesh() and the MeshResult it returns.
+// The whole pipeline from Python: vorocrust.mesh() (a job, as `vorocrust mesh` runs it), the
+// option table it is made from, and the MeshResult it returns.
 #include <cmath>
 #include <limits>
 
@@ -7,30 +8,6 @@
 
 namespace vorocrust::python {
 namespace {
-
-Stage stage_named(const std::string& name) {
-  if (name == "balls") return Stage::Balls;
-  if (name == "surface") return Stage::Surface;
-  if (name == "cells") return Stage::Cells;
-  throw Error(Error::Kind::Usage, "stop_after must be 'balls', 'surface' or 'cells', got '" + name + "'");
-}
-
-InteriorMode interior_named(const std::string& name) {
-  for (InteriorMode mode : {InteriorMode::Random, InteriorMode::Lattice, InteriorMode::Cvt}) {
-    if (name == to_string(mode)) return mode;
-  }
-  throw Error(Error::Kind::Usage, "interior must be 'random', 'lattice' or 'cvt', got '" + name + "'");
-}
-
-SelfIntersections self_intersections_named(const std::string& name) {
-  if (const std::optional<SelfIntersections> mode = parse_self_intersections(name)) return *mode;
-  throw Error(Error::Kind::Usage,
-              "self_intersections must be 'resolve', 'refuse' or 'keep', got '" + name + "'");
-}
-
-const char* stage_name(Stage stage) {
-  return stage == Stage::Balls ? "balls" : stage == Stage::Surface ? "surface" : "cells";
-}
 
 // A result's part as a Python object sharing the run's lifetime.
 template <class Part>
@@ -48,56 +25,165 @@ struct MeshRun {
     if (!slot) slot = make();
     return slot;
   }
-  bool reached(Stage stage) const { return run->options.stop_after >= stage; }
-
-  std::string report(int indent) const {
-    RunReport report;
-    report.inputs = run->inputs;
-    report.options = run->options;
-    report.mesh = &run->input;
-    report.input = &run->info;
-    report.validation = &run->validation;
-    report.result = &run->result;
-    report.timings = run->result.timings;
-    report.status = "ok";
-    return run_report_json(report, indent);
-  }
+  const MeshResult& mesh() const { return run->result.mesh; }
+  bool reached(Stage stage) const { return run->job.options.stop_after >= stage; }
 };
 
-MeshRun run_mesh(const py::object& model, MeshOptions options, const py::object& progress) {
-  options.check();
-  const Surface surface = read_surface_input(model);
-  auto run = std::make_shared<Run>();
-  if (is_path(model)) {
-    run->inputs.push_back(to_path(model).string());
-  } else if (!py::isinstance<Surface>(model) && py::isinstance<py::list>(model)) {
-    for (const py::handle item : model) run->inputs.push_back(to_path(item).string());
-  } else {
-    run->inputs = source_files(*surface.mesh);
-  }
-  run->options = options;
-  run->input = *surface.mesh;
+[[noreturn]] void wrong_type(const OptionSpec& spec, const char* what, const py::handle& value) {
+  throw Error(Error::Kind::Usage,
+              std::string(spec.name) + " takes " + what + ", got " + py::repr(value).cast<std::string>(),
+              {.option = std::string(spec.name)});
+}
 
+// A Python value as the option's value; None: unset.
+OptionValue option_value(const OptionSpec& spec, const py::handle& value) {
+  if (value.is_none()) return std::monostate{};
+  const bool is_bool = py::isinstance<py::bool_>(value);
+  const bool is_int = py::isinstance<py::int_>(value) && !is_bool;
+  switch (spec.kind) {
+    case OptionKind::Flag:
+      if (!is_bool) wrong_type(spec, "True or False", value);
+      return value.cast<bool>();
+    case OptionKind::Integer:
+      if (!is_int) wrong_type(spec, "a whole number", value);
+      try {
+        return value.cast<std::int64_t>();
+      } catch (const py::cast_error&) {
+        throw Error(Error::Kind::Usage, std::string(spec.name) + " must lie " + range_text(spec) + ", got " +
+                                            py::str(value).cast<std::string>(),
+                    {.option = std::string(spec.name)});
+      }
+    case OptionKind::Real:
+      if (!is_int && !py::isinstance<py::float_>(value)) wrong_type(spec, "a number", value);
+      return value.cast<double>();
+    case OptionKind::Choice:
+      if (!py::isinstance<py::str>(value)) wrong_type(spec, "a name", value);
+      return value.cast<std::string>();
+    case OptionKind::Choices: {
+      if (py::isinstance<py::str>(value) || !py::isinstance<py::sequence>(value)) wrong_type(spec, "a list of names", value);
+      std::vector<std::string> names;
+      for (const py::handle item : value) {
+        if (!py::isinstance<py::str>(item)) wrong_type(spec, "a list of names", value);
+        names.push_back(item.cast<std::string>());
+      }
+      return names;
+    }
+    case OptionKind::File:
+      if (!is_path(value)) wrong_type(spec, "a file path", value);
+      return to_path(value).string();
+    case OptionKind::Box: {
+      if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value) || py::len(value) != 6) {
+        wrong_type(spec, "six numbers (xmin, ymin, zmin, xmax, ymax, zmax)", value);
+      }
+      std::array<double, 6> box{};
+      for (std::size_t k = 0; k < 6; ++k) box[k] = py::float_(value[py::int_(k)]).cast<double>();
+      return box;
+    }
+  }
+  wrong_type(spec, "a value", value);
+}
+
+py::object python_value(const OptionValue& value) {
+  return std::visit(
+      [](const auto& v) -> py::object {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::monostate>) {
+          return py::none();
+        } else if constexpr (std::is_same_v<T, std::array<double, 6>>) {
+          return py::make_tuple(v[0], v[1], v[2], v[3], v[4], v[5]);
+        } else {
+          return py::cast(v);
+        }
+      },
+      value);
+}
+
+py::object finite_or_none(double x) { return std::isfinite(x) ? py::object(py::float_(x)) : py::object(py::none()); }
+
+// The table as Python sees it: a dict per option.
+py::list option_table() {
+  py::list table;
+  for (const OptionSpec& spec : mesh_option_specs()) {
+    static const char* const kKinds[] = {"flag", "integer", "real", "choice", "choices", "file", "box"};
+    py::dict d;
+    d["name"] = std::string(spec.name);
+    d["kind"] = kKinds[static_cast<int>(spec.kind)];
+    d["label"] = std::string(spec.label);
+    d["help"] = spell_options(std::string(spec.help), Spelling::Python);
+    d["section"] = std::string(spec.section);
+    d["unit"] = std::string(spec.unit);
+    d["group"] = std::string(spec.group);
+    d["default"] = python_value(spec.default_value);
+    d["min"] = finite_or_none(spec.min);
+    d["max"] = finite_or_none(spec.max);
+    d["min_open"] = spec.min_open;
+    d["max_open"] = spec.max_open;
+    d["also"] = spec.also ? py::object(py::float_(*spec.also)) : py::object(py::none());
+    d["also_means"] = std::string(spec.also_means);
+    py::list choices;
+    for (std::string_view c : spec.choices) choices.append(std::string(c));
+    d["choices"] = py::tuple(choices);
+    d["unset_means"] = std::string(spec.unset_means);
+    d["plain_default"] = spec.plain_default ? py::object(py::float_(*spec.plain_default)) : py::object(py::none());
+    d["smooth_default"] = spec.smooth_default ? py::object(py::float_(*spec.smooth_default)) : py::object(py::none());
+    d["unset_number"] = spec.unset_number ? py::object(py::float_(*spec.unset_number)) : py::object(py::none());
+    py::list front_ends;
+    for (const auto& [bit, name] : {std::pair{kCli, "cli"}, {kPython, "python"}, {kMeshLab, "meshlab"}, {kFreeCad, "freecad"}}) {
+      if (spec.front_ends & bit) front_ends.append(name);
+    }
+    d["front_ends"] = py::tuple(front_ends);
+    d["cli"] = option_spelling(spec, Spelling::Cli);
+    d["meshlab"] = option_spelling(spec, Spelling::MeshLab);
+    d["freecad"] = option_spelling(spec, Spelling::FreeCad);
+    d["default_text"] = spell_options(default_text(spec), Spelling::Python);
+    d["range_text"] = range_text(spec);
+    table.append(d);
+  }
+  return table;
+}
+
+MeshRun run_mesh(const py::object& model, const py::dict& given, const py::object& output_dir, const py::object& progress) {
+  auto run = std::make_shared<Run>();
+  Job& job = run->job;
+  for (const auto& [key, value] : given) {
+    const std::string name = py::str(key).cast<std::string>();
+    const OptionSpec* spec = find_option(name);
+    if (spec == nullptr || !(spec->front_ends & kPython)) {
+      std::string known;
+      for (const OptionSpec& s : mesh_option_specs()) known += (known.empty() ? "" : ", ") + std::string(s.name);
+      throw Error(Error::Kind::Usage, "mesh() got an unknown option '" + name + "'; the options are " + known);
+    }
+    const OptionValue v = option_value(*spec, value);
+    if (v.index() != 0 || spec->default_value.index() == 0) set_option(job.options, *spec, v);
+  }
+  job.options.check();
+  if (!output_dir.is_none()) job.output_dir = to_path(output_dir);
+  // Files are read by the job (their reading is timed and reported); a model in memory is taken.
+  const bool paths = is_path(model) || (py::isinstance<py::list>(model) && py::len(model) > 0 &&
+                                         std::all_of(model.begin(), model.end(), [](py::handle h) { return is_path(h); }));
+  if (paths) {
+    if (is_path(model)) job.inputs.push_back(to_path(model));
+    else for (const py::handle item : model) job.inputs.push_back(to_path(item));
+  } else {
+    const Surface surface = read_surface_input(model);
+    job.model = *surface.mesh;
+    for (const std::string& file : source_files(*surface.mesh)) job.inputs.emplace_back(file);
+  }
   ProgressBridge bridge(progress);
   try {
     py::gil_scoped_release release;
-    const ThreadLimit threads(options.threads);
-    run->validation =
-        validate(run->input, {.self_intersections_are_errors = options.self_intersections == SelfIntersections::Refuse});
-    for (const Finding& f : run->validation.findings) {
-      if (f.severity != Finding::Severity::Error) continue;
-      throw Error(Error::Kind::InvalidGeometry,
-                  f.message + (f.code == "self-intersection"
-                                   ? " (self_intersections=\"resolve\" cuts them along their intersection curves)"
-                                   : ""));
-    }
-    run->info = mesh_info(run->input);
-    run->result = generate_mesh(run->input, options, bridge.callback());
+    run->result = run_job(job, bridge.callback());
   } catch (const Error& e) {
     if (e.kind() == Error::Kind::Cancelled) bridge.rethrow();
     throw;
   }
   return MeshRun{std::move(run), {}, {}, {}, {}, {}, {}};
+}
+
+py::list lines(const std::vector<std::string>& text) {
+  py::list out;
+  for (const std::string& line : text) out.append(spell_options(line, Spelling::Python));
+  return out;
 }
 
 }  // namespace
@@ -108,20 +194,18 @@ What one mesh() run made, with everything `vorocrust mesh` writes about it.
 
 Parts the run did not reach are None: `surface` before stop_after="surface", `cells` before
 stop_after="cells". Figures (features, refinement, slivers, surface quality) are in report(),
-the same document as the CLI's OUTDIR/report.json.
+the same document as the CLI's OUTDIR/report.json; `summary` holds the lines the CLI prints.
 )doc")
       .def_property_readonly(
           "balls",
-          [](MeshRun& r) {
-            return r.cached(r.balls, [&] { return py::cast(Balls{part_of(r.run, r.run->result.balls)}); });
-          },
+          [](MeshRun& r) { return r.cached(r.balls, [&] { return py::cast(Balls{part_of(r.run, r.mesh().balls)}); }); },
           "The protecting balls (Balls).")
       .def_property_readonly(
           "seeds",
           [](MeshRun& r) {
             return r.cached(r.seeds, [&]() -> py::object {
               if (!r.reached(Stage::Surface)) return py::none();
-              return py::cast(Seeds{part_of(r.run, r.run->result.seeds)});
+              return py::cast(Seeds{part_of(r.run, r.mesh().seeds)});
             });
           },
           "The seeds (Seeds): surface seeds first, two per seed pair, then interior and outside seeds "
@@ -131,7 +215,7 @@ the same document as the CLI's OUTDIR/report.json.
           [](MeshRun& r) {
             return r.cached(r.surface, [&]() -> py::object {
               if (!r.reached(Stage::Surface)) return py::none();
-              return py::cast(Surface{part_of(r.run, r.run->result.surface)});
+              return py::cast(Surface{part_of(r.run, r.mesh().surface)});
             });
           },
           "The output surface (Surface): triangles of ball centres between seeds of different regions, "
@@ -142,31 +226,28 @@ the same document as the CLI's OUTDIR/report.json.
           [](MeshRun& r) {
             return r.cached(r.cells, [&]() -> py::object {
               if (!r.reached(Stage::Cells)) return py::none();
-              return py::cast(make_cells(part_of(r.run, r.run->result.cells)));
+              return py::cast(make_cells(part_of(r.run, r.mesh().cells)));
             });
           },
           "The conforming Voronoi mesh (Cells) of the material seeds; None before stop_after=\"cells\".")
       .def_property_readonly(
           "input",
-          [](MeshRun& r) {
-            return r.cached(r.input, [&] { return py::cast(Surface{part_of(r.run, r.run->input)}); });
-          },
+          [](MeshRun& r) { return r.cached(r.input, [&] { return py::cast(Surface{part_of(r.run, r.run->result.input)}); }); },
           "The input surface as meshed: validated, its orientation fixed.")
       .def_property_readonly(
           "smoothed_input",
           [](MeshRun& r) {
-            return r.cached(r.smoothed_input,
-                            [&] { return py::cast(Surface{part_of(r.run, r.run->result.smoothed_input)}); });
+            return r.cached(r.smoothed_input, [&] { return py::cast(Surface{part_of(r.run, r.mesh().smoothed_input)}); });
           },
           "The surface the balls cover: the input after patch smoothing (the input itself without it).")
       .def_property_readonly(
-          "validation", [](const MeshRun& r) { return findings_list(r.run->validation); },
+          "validation", [](const MeshRun& r) { return findings_list(r.run->result.validation); },
           "The input validation's findings, as validate() gives them.")
       .def_property_readonly(
           "surface_quality",
           [](const MeshRun& r) -> py::object {
-            if (!r.run->result.surface_quality) return py::none();
-            return parse_json(surface_quality_json(*r.run->result.surface_quality));
+            if (!r.mesh().surface_quality) return py::none();
+            return parse_json(surface_quality_json(*r.mesh().surface_quality));
           },
           "The output surface measured against the input (dict, as measure_surface_quality()), or None.")
       .def_property_readonly(
@@ -176,19 +257,42 @@ the same document as the CLI's OUTDIR/report.json.
             for (const PhaseTiming& t : r.run->result.timings) list.append(py::make_tuple(t.name, t.seconds));
             return list;
           },
-          "(phase, seconds) for every phase of the run.")
+          "(phase, seconds) for every phase of the run, reading and writing included, as report.json lists them.")
       .def_property_readonly(
-          "stop_after", [](const MeshRun& r) { return stage_name(r.run->options.stop_after); },
+          "summary", [](const MeshRun& r) { return lines(r.run->result.summary); },
+          "The run's figures and what it wrote, a line each: the lines `vorocrust mesh` prints.")
+      .def_property_readonly(
+          "warnings", [](const MeshRun& r) { return lines(r.run->result.warnings); },
+          "Validation's warnings and what the run changed in its input (self-intersections cut, smoothing "
+          "rounds refused), a line each.")
+      .def_property_readonly(
+          "written",
+          [](const MeshRun& r) {
+            py::list list;
+            for (const std::filesystem::path& p : r.run->result.written) list.append(p.string());
+            return list;
+          },
+          "The files and folders written into output_dir, report.json last; empty without output_dir.")
+      .def_property_readonly(
+          "stop_after", [](const MeshRun& r) { return to_string(r.run->job.options.stop_after); },
           "The last stage the run made: \"balls\", \"surface\" or \"cells\".")
+      .def_property_readonly(
+          "options",
+          [](const MeshRun& r) {
+            py::dict d;
+            for (const auto& [name, value] : options_in_force(r.run->job.options)) d[py::str(std::string(name))] = python_value(value);
+            return d;
+          },
+          "The options the run used, by name, an unset default resolved (sharp_angle 30, or 60 with smooth).")
       .def(
-          "report", [](const MeshRun& r) { return parse_json(r.report(2)); },
+          "report", [](const MeshRun& r) { return parse_json(job_report_json(r.run->job, r.run->result, 2)); },
           "The run's report as a dict: the document `vorocrust mesh` writes as OUTDIR/report.json (inputs, "
           "options, input description, features, refinement, slivers, surface and its quality, timings).")
       .def(
           "write_report",
           [](const MeshRun& r, const py::object& path) {
             const std::filesystem::path p = to_path(path);
-            const std::string text = r.report(2) + "\n";
+            const std::string text = job_report_json(r.run->job, r.run->result, 2) + "\n";
             py::gil_scoped_release release;
             write_file_atomically(p, text);
           },
@@ -196,78 +300,36 @@ the same document as the CLI's OUTDIR/report.json.
       .def(
           "write_quality_svg",
           [](const MeshRun& r, const py::object& path) {
-            if (!r.run->result.surface_quality) {
+            if (!r.mesh().surface_quality) {
               throw Error(Error::Kind::Usage, "the run stopped before the surface: there is no surface quality to draw");
             }
             const std::filesystem::path p = to_path(path);
+            std::vector<HistogramPanel> panels = {surface_quality_panel(*r.mesh().surface_quality)};
+            if (r.mesh().cell_quality) panels.push_back(cell_quality_panel(*r.mesh().cell_quality));
             py::gil_scoped_release release;
-            write_histogram_svg(p, "surface quality: " + (p.parent_path() / "surface.ply").string(),
-                                {surface_quality_panel(*r.run->result.surface_quality)});
+            write_histogram_svg(p, "quality: " + (p.parent_path() / "surface.ply").string(), panels);
           },
-          py::arg("path"), "Draws the output surface's triangle-quality histogram (quality.svg), atomically.")
+          py::arg("path"), "Draws the quality histograms (quality.svg), atomically.")
       .def("__repr__", [](const MeshRun& r) {
-        const MeshResult& m = r.run->result;
-        return "<vorocrust.MeshResult to " + std::string(stage_name(r.run->options.stop_after)) + ": " +
+        const MeshResult& m = r.mesh();
+        return "<vorocrust.MeshResult to " + std::string(to_string(r.run->job.options.stop_after)) + ": " +
                std::to_string(m.balls.size()) + " balls, " + std::to_string(m.seeds.size()) + " seeds, " +
                std::to_string(m.surface.num_faces()) + " surface triangles, " + std::to_string(m.cells.cells.size()) +
                " cells>";
       });
 
+  m.attr("OPTIONS") = option_table();
   {
-    // The library's defaults, so mesh() and the add-ons offer the same ones.
-    const MeshOptions defaults;
-    py::dict d;
-    d["lipschitz"] = defaults.lipschitz;
-    d["smooth"] = defaults.smooth;
-    d["sharp_angle"] = defaults.sharp_angle();  // with smooth=False; mesh() takes None for the mode's own
-    d["smoothing_iterations"] = defaults.smoothing_rounds();
-    d["smooth_sharp_angle"] = MeshOptions::kSmoothSharpAngleDegrees;
-    d["smooth_smoothing_iterations"] = MeshOptions::kSmoothSmoothingIterations;
-    d["smoothing_tolerance"] = defaults.smoothing_tolerance;
-    d["min_triangle_angle"] = defaults.min_triangle_angle();
-    d["smooth_min_triangle_angle"] = MeshOptions::kSmoothMinTriangleAngleDegrees;
-    d["interior"] = to_string(defaults.interior);
-    d["cvt_iterations"] = defaults.cvt_iterations;
-    d["max_aspect_ratio"] = defaults.max_aspect_ratio;
-    d["stop_after"] = stage_name(defaults.stop_after);
-    d["seed"] = defaults.seed;
-    d["threads"] = defaults.threads;
-    d["self_intersections"] = to_string(defaults.self_intersections);
-    m.attr("DEFAULT_OPTIONS") = d;
+    py::list formats;
+    for (const OutputFormatSpec& f : output_formats()) {
+      py::list files;
+      for (std::string_view file : f.files) files.append(std::string(file));
+      formats.append(py::make_tuple(std::string(f.name), py::tuple(files), to_string(f.needs), f.volume, std::string(f.help)));
+    }
+    m.attr("_OUTPUT_TABLE") = formats;
   }
-  m.def(
-      "_mesh",
-      [](const py::object& model, double lipschitz, bool smooth, const std::optional<double>& sharp_angle,
-         const py::object& max_size, const py::object& sizing, const std::optional<int>& smoothing_iterations,
-         double smoothing_tolerance,
-         const std::optional<double>& min_triangle_angle, const std::string& interior, int cvt_iterations,
-         double max_aspect_ratio, const std::string& stop_after, std::uint64_t seed, int threads, const std::string& self_intersections,
-         const std::optional<std::array<double, 6>>& box, const py::object& progress) {
-        MeshOptions options;
-        options.lipschitz = lipschitz;
-        options.smooth = smooth;
-        options.sharp_angle_degrees = sharp_angle;
-        options.max_size = max_size.is_none() ? std::numeric_limits<double>::infinity() : max_size.cast<double>();
-        if (!sizing.is_none()) options.sizing_file = to_path(sizing);
-        options.smoothing_iterations = smoothing_iterations;
-        options.smoothing_tolerance = smoothing_tolerance;
-        options.min_triangle_angle_degrees = min_triangle_angle;
-        options.interior = interior_named(interior);
-        options.cvt_iterations = cvt_iterations;
-        options.max_aspect_ratio = max_aspect_ratio;
-        options.stop_after = stage_named(stop_after);
-        options.seed = seed;
-        options.threads = threads;
-        options.box = box;
-        options.self_intersections = self_intersections_named(self_intersections);
-        return run_mesh(model, options, progress);
-      },
-      py::arg("model"), py::arg("lipschitz"), py::arg("smooth"), py::arg("sharp_angle"), py::arg("max_size"),
-      py::arg("sizing"),
-      py::arg("smoothing_iterations"), py::arg("smoothing_tolerance"), py::arg("min_triangle_angle"), py::arg("interior"), py::arg("cvt_iterations"),
-      py::arg("max_aspect_ratio"), py::arg("stop_after"),
-      py::arg("seed"), py::arg("threads"), py::arg("self_intersections"), py::arg("box"), py::arg("progress"),
-      "The pipeline behind vorocrust.mesh(), which documents the arguments.");
+  m.def("_mesh", &run_mesh, py::arg("model"), py::arg("options"), py::arg("output_dir"), py::arg("progress"),
+        "The job behind vorocrust.mesh(), which documents the arguments.");
 }
 
 }  // namespace vorocrust::python

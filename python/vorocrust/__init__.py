@@ -14,8 +14,9 @@ raise vorocrust.Error subclasses carrying the library's message; a progress call
 returns False cancels a run with vorocrust.Cancelled, and nothing is written.
 """
 
-import math
+import inspect
 import os
+import textwrap
 
 from ._vorocrust import (  # noqa: F401  (the public interface)
     Balls,
@@ -30,7 +31,7 @@ from ._vorocrust import (  # noqa: F401  (the public interface)
     Seeds,
     Surface,
     UnreadableInputError,
-    DEFAULT_OPTIONS,
+    OPTIONS,
     UsageError,
     __version__,
     compute_cells,
@@ -53,104 +54,72 @@ from . import _vorocrust
 __all__ = [
     "Balls", "Cancelled", "Cells", "Error", "InternalError", "InvalidGeometryError", "MeshResult",
     "NotYetImplementedError", "OutputError", "Seeds", "Surface", "UnreadableInputError", "UsageError",
-    "__version__", "DEFAULT_OPTIONS", "compute_cells", "info", "measure_surface_quality", "merge_surfaces", "mesh",
+    "__version__", "DEFAULT_OPTIONS", "OPTIONS", "compute_cells", "info", "measure_surface_quality", "merge_surfaces", "mesh",
     "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_outputs", "write_pflotran",
     "write_tough",
     "write_files", "write_seeds", "write_surface", "write_vtu", "OUTPUT_FORMATS", "VOLUME_FORMATS",
     "INTERIOR_MODES", "STAGES",
 ]
 
+#: OPTIONS: every option of mesh(), from the library's one table of options: a dict each with its
+#: name, kind, label, help, the paper's section, unit, default (None: unset, see default_text),
+#: range (min, max, min_open, max_open, also) or choices, and how each front end spells it.
+_OPTION = {o["name"]: o for o in OPTIONS}
+#: The library's default of each option; None where the default is unset (it follows `smooth`,
+#: or means "none", as OPTIONS[...]["default_text"] says).
+DEFAULT_OPTIONS = {o["name"]: o["default"] for o in OPTIONS if "python" in o["front_ends"]}
 #: What a run can stop after, in pipeline order.
-STAGES = ("balls", "surface", "cells")
+STAGES = _OPTION["stop_after"]["choices"]
 #: How the volume away from the surface is seeded (paper 2.5).
-INTERIOR_MODES = ("random", "lattice", "cvt")
-#: DEFAULT_OPTIONS: the library's default for each option of mesh() (from the extension).
+INTERIOR_MODES = _OPTION["interior"]["choices"]
 
 #: What write_outputs() can write, with the files each one makes in the output folder.
-OUTPUT_FORMATS = {
-    "balls": ("balls.csv", "balls.vtk"),
-    "seeds": ("seeds.csv",),
-    "obj": ("surface.obj",),
-    "ply": ("surface.ply",),
-    "svg": ("quality.svg",),
-    "report": ("report.json",),
-    "vtu": ("mesh.vtu",),
-    "openfoam": ("case",),
-    "tough": ("MESH",),
-    "pflotran": ("pflotran",),
-}
+OUTPUT_FORMATS = {name: files for name, files, _, _, _ in _vorocrust._OUTPUT_TABLE}
+OUTPUT_FORMATS["report"] = ("report.json",)
 
 
-def mesh(model, *, lipschitz=DEFAULT_OPTIONS["lipschitz"], smooth=DEFAULT_OPTIONS["smooth"], sharp_angle=None,
-         max_size=None, sizing=None, smoothing_iterations=None,
-         smoothing_tolerance=DEFAULT_OPTIONS["smoothing_tolerance"], min_triangle_angle=None,
-         interior=DEFAULT_OPTIONS["interior"], cvt_iterations=DEFAULT_OPTIONS["cvt_iterations"],
-         max_aspect_ratio=DEFAULT_OPTIONS["max_aspect_ratio"], stop_after=DEFAULT_OPTIONS["stop_after"], seed=DEFAULT_OPTIONS["seed"], threads=DEFAULT_OPTIONS["threads"],
-         self_intersections=DEFAULT_OPTIONS["self_intersections"], box=None, progress=None):
-    """Meshes a model: `vorocrust mesh` without the files. Returns a MeshResult.
+def _option_doc(o):
+    text = "%s: %s" % (o["name"], o["help"])
+    if o["section"]:
+        text += " (paper %s)" % o["section"]
+    text += ". %s%s." % (o["default_text"][0].upper() + o["default_text"][1:],
+                         "" if o["kind"] == "flag" else "; range: " + o["range_text"])
+    return textwrap.fill(text, 96, initial_indent="    ", subsequent_indent="        ")
 
-    model: a file path, a list of paths (merged into one model, one group per file), a
-        Surface, or a (vertices, triangles) pair of arrays (n x 3 numbers, m x 3 indices).
-    lipschitz: L in (0, 1), how fast ball radii may vary (CLI --lipschitz).
-    smooth: the model approximates a smooth surface (a scan, a coarse tessellation of a curved
-        shape): it is smoothed as one patch and its features are found on the result, so the
-        folds of its tessellation are not creases (--smooth).
-    sharp_angle: normal deviation in degrees (0, 90) above which an edge is a sharp crease
-        (--sharp-angle); None: DEFAULT_OPTIONS["sharp_angle"], or ["smooth_sharp_angle"] when smooth.
-    max_size: largest ball radius and cell size, None for no bound (--max-size).
-    sizing: a sizing file of lines "x y z size", interpolated (--sizing).
-    smoothing_iterations: rounds of adaptive Loop subdivision inside smooth patches; None: none,
-        or DEFAULT_OPTIONS["smooth_smoothing_iterations"] when smooth.
-    smoothing_tolerance: how far smoothing should move the surface at most, as a fraction of the
-        input's bounding-box diagonal (a target, not a bound): the faces around a vertex that
-        Loop's rules would move farther are first split at their edge midpoints, at most twice; 0
-        for Loop's rules alone (--smoothing-tolerance).
-    min_triangle_angle: surface triangles away from features with an angle below this many
-        degrees (0 to 30) are split by shrinking the balls that cover their circumcentres
-        (--min-triangle-angle); None: DEFAULT_OPTIONS["min_triangle_angle"] (0, none), or
-        ["smooth_min_triangle_angle"] (30) when smooth.
-    interior: how the volume is seeded: "random", "lattice" or "cvt" (paper 2.5).
-    cvt_iterations: Lloyd iterations of interior="cvt".
-    max_aspect_ratio: cells whose aspect ratio (enclosing sphere over inscribed ball) exceeds this
-        get a seed at their centroid, for at most 2 rounds; 0 for none, else at least 3
-        (--max-aspect-ratio).
-    stop_after: "balls", "surface" or "cells" (the whole mesh).
-    seed: random seed; equal model, options and seed give equal results.
-    threads: worker threads, 0 for all cores; results do not depend on it.
-    self_intersections: faces that cut through each other: "resolve" cuts them along their
-        intersection curves, which become creases, each new piece of space joining a region of
-        the input; "refuse" raises InvalidGeometryError naming them; "keep" meshes them as they
-        are (--self-intersections).
-    box: (xmin, ymin, zmin, xmax, ymax, zmax), the domain around open sheets (--box): its sides
-        join the surface and what no material fills inside it becomes the material "domain".
-        None: a model with open edges gets its bounding box grown by a tenth of its diagonal on
-        every side, a closed model no box.
-    progress: a callable progress(phase, fraction) with phase a str and fraction in [0, 1] or
-        None when unknown, called at each new phase and at most every 50 ms within one. Return
-        False (any false value but None) to cancel the run: it raises Cancelled and has
-        written nothing. An exception the callback raises stops the run and propagates.
 
-    The input is validated first, its orientation fixed; a finding of severity "error" raises
-    InvalidGeometryError with its message. The run releases the GIL (other Python threads go
-    on) and answers Ctrl-C. Raises UsageError for options out of range, UnreadableInputError /
-    InvalidGeometryError for bad models (naming file and line), NotYetImplementedError for a
-    stage this version of the library does not have.
-    """
-    return _vorocrust._mesh(
-        model, lipschitz=float(lipschitz), smooth=bool(smooth),
-        sharp_angle=None if sharp_angle is None else float(sharp_angle),
-        max_size=None if max_size is None or math.isinf(max_size) else float(max_size), sizing=sizing,
-        smoothing_iterations=None if smoothing_iterations is None else int(smoothing_iterations),
-        smoothing_tolerance=float(smoothing_tolerance),
-        min_triangle_angle=None if min_triangle_angle is None else float(min_triangle_angle),
-        interior=interior,
-        cvt_iterations=int(cvt_iterations), max_aspect_ratio=float(max_aspect_ratio), stop_after=stop_after, seed=int(seed), threads=int(threads),
-        self_intersections=self_intersections,
-        box=None if box is None else tuple(float(x) for x in box), progress=progress)
+def mesh(model, *, output_dir=None, progress=None, **options):
+    return _vorocrust._mesh(model, options, output_dir, progress)
+
+
+mesh.__signature__ = inspect.Signature(
+    [inspect.Parameter("model", inspect.Parameter.POSITIONAL_OR_KEYWORD)]
+    + [inspect.Parameter(o["name"], inspect.Parameter.KEYWORD_ONLY, default=o["default"])
+       for o in OPTIONS if "python" in o["front_ends"]]
+    + [inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=None) for name in ("output_dir", "progress")])
+mesh.__doc__ = """Meshes a model as `vorocrust mesh` does. Returns a MeshResult.
+
+model: a file path, a list of paths (merged into one model, one group per file), a Surface, or
+    a (vertices, triangles) pair of arrays (n x 3 numbers, m x 3 indices).
+output_dir: a folder to write the outputs into (made when missing), as `vorocrust mesh -o`
+    does: the formats of `formats` the run reached, and report.json. None: nothing is written.
+progress: a callable progress(phase, fraction) with phase a str and fraction in [0, 1] or None
+    when unknown, called at each new phase and at most every 50 ms within one. Return False
+    (any false value but None) to cancel the run: it raises Cancelled and writes nothing (an
+    output folder keeps what it held, and gets report.json saying so). An exception the
+    callback raises stops the run and propagates.
+
+The options (OPTIONS holds them as data; None leaves an option at its default):
+""" + "\n".join(_option_doc(o) for o in OPTIONS if "python" in o["front_ends"]) + """
+
+The input is validated first, its orientation fixed; a finding of severity "error" raises
+InvalidGeometryError with its message. The run releases the GIL (other Python threads go on)
+and answers Ctrl-C. Raises UsageError for an unknown option or a value out of range (naming the
+option), UnreadableInputError / InvalidGeometryError for bad models (naming file and line).
+"""
 
 
 #: The formats written from the cells (the volume mesh), by name in OUTPUT_FORMATS.
-VOLUME_FORMATS = ("vtu", "openfoam", "tough", "pflotran")
+VOLUME_FORMATS = tuple(name for name, _, _, volume, _ in _vorocrust._OUTPUT_TABLE if volume)
 
 # The part of a run each format is written from.
 _FORMAT_PARTS = {"balls": "balls", "seeds": "seeds", "obj": "surface", "ply": "surface", "svg": "run",
@@ -178,7 +147,7 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
             raise UsageError("nothing to write as %r: no %s%s" % (name, _FORMAT_PARTS[name], stage))
     os.makedirs(folder, exist_ok=True)
     writers = {
-        "balls": lambda: (write_balls(balls, _at(folder, "balls.csv")), write_balls(balls, _at(folder, "balls.vtk"))),
+        "balls": lambda: _write_balls(folder, balls, run),
         "seeds": lambda: write_seeds(seeds, _at(folder, "seeds.csv")),
         "obj": lambda: write_surface(surface, _at(folder, "surface.obj")),
         "ply": lambda: write_surface(surface, _at(folder, "surface.ply")),
@@ -192,8 +161,19 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
     written = []
     for name in formats:
         writers[name]()
-        written += [_at(folder, f) for f in OUTPUT_FORMATS[name]]
+        written += [_at(folder, f) for f in OUTPUT_FORMATS[name] if os.path.exists(_at(folder, f))]
     return written
+
+
+def _write_balls(folder, balls, run):
+    write_balls(balls, _at(folder, "balls.csv"))
+    write_balls(balls, _at(folder, "balls.vtk"))
+    # The surface the balls cover, when smoothing changed it, as `vorocrust mesh` writes it.
+    smoothed = _at(folder, "smoothed_surface.ply")
+    if run is not None and run.report()["features"]["smoothing_iterations"] > 0:
+        write_surface(run.smoothed_input, smoothed)
+    elif os.path.exists(smoothed):
+        os.remove(smoothed)
 
 
 def write_outputs(result, folder, formats=None, cells=None):

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "cells/seed_sets.hpp"
-#include "export/text_numbers.hpp"
+#include "io/text_numbers.hpp"
 #include "test_support.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"

@@ -120,7 +120,9 @@ TEST(Strata, ASmoothSurfaceKeepsItsBoundaryAndNonManifoldEdges) {
     expect_consistent(smooth);
     for (std::size_t e = 0; e < smooth.topology.num_edges(); ++e) {
       EXPECT_EQ(smooth.sharp_edge[e], smooth.topology.valence(e) != 2) << "edge " << e;
-      if (smooth.sharp_edge[e]) EXPECT_TRUE(rules.sharp_edge[e]);
+      if (smooth.sharp_edge[e]) {
+        EXPECT_TRUE(rules.sharp_edge[e]);
+      }
     }
   }
   const Strata camel = strata_of("igl_camelhead.off", 60, FeatureDetection::BoundaryOnly);

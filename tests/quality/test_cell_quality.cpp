@@ -11,7 +11,7 @@
 #include <tuple>
 
 #include "cells/seed_sets.hpp"
-#include "quality/brute_force_spheres.hpp"
+#include "geometry/brute_force_spheres.hpp"
 #include "vorocrust/cell_quality.hpp"
 #include "test_support.hpp"
 #include "vorocrust/error.hpp"
@@ -232,7 +232,7 @@ void expect_brute_force_spheres(const VoronoiMesh& mesh, const std::vector<Seed>
                                 std::size_t c, std::size_t max_points = 64) {
   const CellShape& s = q.cells[c];
   std::vector<Point> points;
-  std::vector<quality::Plane> planes;
+  std::vector<geometry::Plane> planes;
   for (Index f : mesh.cells[c].faces) {
     const VoronoiFace& face = mesh.faces[f];
     for (Index p : face.points) points.push_back(mesh.points[p]);
@@ -245,9 +245,9 @@ void expect_brute_force_spheres(const VoronoiMesh& mesh, const std::vector<Seed>
   });
   points.erase(std::unique(points.begin(), points.end()), points.end());
   if (points.size() <= max_points) {
-    EXPECT_NEAR(s.circumradius, quality::brute_force_enclosing_radius(points), 1e-9 * s.circumradius) << "cell " << c;
+    EXPECT_NEAR(s.circumradius, geometry::brute_force_enclosing_radius(points), 1e-9 * s.circumradius) << "cell " << c;
   }
-  EXPECT_NEAR(s.inradius, quality::brute_force_inscribed_radius(planes), 1e-9 * s.circumradius) << "cell " << c;
+  EXPECT_NEAR(s.inradius, geometry::brute_force_inscribed_radius(planes), 1e-9 * s.circumradius) << "cell " << c;
 }
 
 // Cells of a lattice moved by a thousandth or less: tiny faces and edges next to large ones,

@@ -18,7 +18,9 @@ SurfaceSite site(const Point& p, StratumType type = StratumType::Patch) {
   return s;
 }
 
-SeedPair triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) { return SeedPair{{a, b, c}, {}}; }
+SeedPair triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+  return SeedPair{{a, b, c}, {Point::Zero(), Point::Zero()}};
+}
 
 // Two close balls (0.87 apart) facing a larger one in the plane z = 0: the angle at the far ball
 // is 32.3 degrees with the far ball 1.5 away, 25.8 with it 1.9 away.

@@ -7,6 +7,8 @@
 // numbers read the same on every machine.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <filesystem>
 #include <functional>
 #include <ostream>
@@ -14,7 +16,7 @@
 
 namespace vorocrust {
 
-void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
-void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+VOROCRUST_API void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
+VOROCRUST_API void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
 }  // namespace vorocrust

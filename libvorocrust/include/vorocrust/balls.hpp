@@ -5,6 +5,8 @@
 // conditions C1-C4 of docs/ball-conditions.md.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <vector>
@@ -16,9 +18,9 @@ namespace vorocrust {
 // Ordered by dimension: corners (0), creases (1), patches (2).
 enum class StratumType : std::uint8_t { Corner = 0, Crease = 1, Patch = 2 };
 
-const char* to_string(StratumType type) noexcept;
+VOROCRUST_API const char* to_string(StratumType type) noexcept;
 
-struct Ball {
+struct VOROCRUST_API Ball {
   Point center;
   double radius = 0;
   StratumType type = StratumType::Patch;
@@ -26,9 +28,9 @@ struct Ball {
 };
 
 // OUTDIR/balls.csv: `x,y,z,radius,stratum_type,stratum_index`, 17 significant digits.
-void write_balls_csv(const std::vector<Ball>& balls, const std::filesystem::path& path);
+VOROCRUST_API void write_balls_csv(const std::vector<Ball>& balls, const std::filesystem::path& path);
 // A VTK legacy polydata file of the ball centres with radius, type and stratum as point data,
 // viewable in ParaView (glyph by radius to see the balls).
-void write_balls_vtk(const std::vector<Ball>& balls, const std::filesystem::path& path);
+VOROCRUST_API void write_balls_vtk(const std::vector<Ball>& balls, const std::filesystem::path& path);
 
 }  // namespace vorocrust

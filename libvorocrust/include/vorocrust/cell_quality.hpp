@@ -26,6 +26,8 @@
 // point index outside the mesh, Error(Usage) for options out of range.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -34,7 +36,7 @@
 
 namespace vorocrust {
 
-struct CellQualityOptions {
+struct VOROCRUST_API CellQualityOptions {
   // The aspect-ratio histogram: `histogram_bins` bins evenly over [1, histogram_high], bin k
   // holding [1 + k w, 1 + (k + 1) w) with w = (histogram_high - 1) / bins, the last bin also
   // histogram_high itself, the first bin anything below 1 (rounding); ratios above
@@ -48,7 +50,7 @@ struct CellQualityOptions {
   void check() const;
 };
 
-struct CellShape {
+struct VOROCRUST_API CellShape {
   double circumradius = 0;  // R: of the smallest sphere enclosing the cell
   Point circumcentre = Point::Zero();
   double inradius = 0;  // r: of the largest ball inside the cell
@@ -60,7 +62,7 @@ struct CellShape {
   double shortest_edge_relative = 0;  // shortest_edge / cbrt(volume); 0 without volume
 };
 
-struct CellQuality {
+struct VOROCRUST_API CellQuality {
   std::vector<CellShape> cells;  // one per VoronoiMesh::cells, in its order
 
   double min_aspect_ratio = 0, mean_aspect_ratio = 0, max_aspect_ratio = 0;
@@ -90,6 +92,6 @@ struct CellQuality {
   double max_non_orthogonality = 0, mean_non_orthogonality = 0;
 };
 
-CellQuality measure_cell_quality(const VoronoiMesh& mesh, const CellQualityOptions& options = {});
+VOROCRUST_API CellQuality measure_cell_quality(const VoronoiMesh& mesh, const CellQualityOptions& options = {});
 
 }  // namespace vorocrust

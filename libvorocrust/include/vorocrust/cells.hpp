@@ -26,6 +26,8 @@
 // seeds must surround them). The result does not depend on options.threads.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -37,12 +39,12 @@ namespace vorocrust {
 
 inline constexpr std::int32_t kNoCell = -1;
 
-struct CellsOptions {
+struct VOROCRUST_API CellsOptions {
   std::vector<std::int32_t> materials;  // regions that get cells; empty: every region > 0
   int threads = 0;                      // 0 = all hardware threads
 };
 
-struct VoronoiFace {
+struct VOROCRUST_API VoronoiFace {
   std::vector<Index> points;  // the polygon; its normal points from owner to neighbour side
   std::int32_t owner = kNoCell;
   std::int32_t neighbour = kNoCell;  // kNoCell when the other side is no material cell
@@ -51,7 +53,7 @@ struct VoronoiFace {
   RegionPair regions;        // back: the owner's region; front: the region across the face
 };
 
-struct VoronoiCell {
+struct VOROCRUST_API VoronoiCell {
   Index seed = 0;
   Point site = Point::Zero();  // the seed's position: the node simulators put the cell's values at
   std::int32_t region = 0;
@@ -60,7 +62,7 @@ struct VoronoiCell {
   Point centroid = Point::Zero();
 };
 
-struct VoronoiMesh {
+struct VOROCRUST_API VoronoiMesh {
   std::vector<Point> points;
   std::vector<VoronoiFace> faces;
   std::vector<VoronoiCell> cells;
@@ -69,24 +71,24 @@ struct VoronoiMesh {
   std::vector<std::string> region_names;
 };
 
-VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options = {});
+VOROCRUST_API VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options = {});
 
 // A face's area, its unit normal (from owner to the other side) and its centroid, from the
 // triangles fanned about its vertex mean, as the cells' volumes are measured.
-struct FaceGeometry {
+struct VOROCRUST_API FaceGeometry {
   double area = 0;
   Point normal = Point::Zero();
   Point centroid = Point::Zero();
 };
-FaceGeometry face_geometry(const VoronoiMesh& mesh, std::size_t face);
+VOROCRUST_API FaceGeometry face_geometry(const VoronoiMesh& mesh, std::size_t face);
 
 // The name of region `label`: mesh.region_names[label] where given, else "outside" for 0 and
 // "material<N>" for N.
-std::string region_name(const VoronoiMesh& mesh, std::int32_t label);
+VOROCRUST_API std::string region_name(const VoronoiMesh& mesh, std::int32_t label);
 
 // The figures every summary of a mesh gives: faces with a cell on both sides, and the sum of the
 // cells' volumes.
-std::size_t count_interior_faces(const VoronoiMesh& mesh);
-double total_volume(const VoronoiMesh& mesh);
+VOROCRUST_API std::size_t count_interior_faces(const VoronoiMesh& mesh);
+VOROCRUST_API double total_volume(const VoronoiMesh& mesh);
 
 }  // namespace vorocrust

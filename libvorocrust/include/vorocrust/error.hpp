@@ -10,16 +10,19 @@
 #include <stdexcept>
 #include <string>
 
+#include "vorocrust/api.hpp"
+
 namespace vorocrust {
 
 // Where a problem lies: the file, its line, and the face of the merged mesh, as far as known.
-struct ErrorLocation {
+struct VOROCRUST_API ErrorLocation {
   std::string file;                // empty when the problem is not tied to a file
   std::size_t line = 0;            // 1-based; 0 when unknown (binary formats)
   std::optional<std::size_t> face; // 0-based index in the merged mesh
+  std::string option;              // the option at fault, by its name in options.hpp's table
 };
 
-class Error : public std::runtime_error {
+class VOROCRUST_API Error : public std::runtime_error {
  public:
   using Location = ErrorLocation;
 
@@ -47,6 +50,6 @@ class Error : public std::runtime_error {
 };
 
 // "unreadable input", "invalid geometry", ... for messages and JSON.
-const char* to_string(Error::Kind kind) noexcept;
+VOROCRUST_API const char* to_string(Error::Kind kind) noexcept;
 
 }  // namespace vorocrust

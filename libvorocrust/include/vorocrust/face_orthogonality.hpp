@@ -11,13 +11,15 @@
 //   near the surface have centroids well away from their seeds, so this is not 0.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstddef>
 
 #include "vorocrust/cells.hpp"
 
 namespace vorocrust {
 
-double link_angle(const VoronoiMesh& mesh, std::size_t face);
-double centroid_non_orthogonality(const VoronoiMesh& mesh, std::size_t face);
+VOROCRUST_API double link_angle(const VoronoiMesh& mesh, std::size_t face);
+VOROCRUST_API double centroid_non_orthogonality(const VoronoiMesh& mesh, std::size_t face);
 
 }  // namespace vorocrust

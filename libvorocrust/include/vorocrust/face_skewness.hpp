@@ -9,6 +9,8 @@
 // not the centroids, so skewness measures how far each cell's centroid lies from its seed.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstddef>
 #include <vector>
 
@@ -18,9 +20,9 @@ namespace vorocrust {
 
 inline constexpr double kHighSkewness = 4;  // checkMesh's threshold
 
-double face_skewness(const VoronoiMesh& mesh, std::size_t face);
+VOROCRUST_API double face_skewness(const VoronoiMesh& mesh, std::size_t face);
 
 // The faces whose skewness exceeds `threshold`, in face order.
-std::vector<std::size_t> skew_faces(const VoronoiMesh& mesh, double threshold = kHighSkewness);
+VOROCRUST_API std::vector<std::size_t> skew_faces(const VoronoiMesh& mesh, double threshold = kHighSkewness);
 
 }  // namespace vorocrust

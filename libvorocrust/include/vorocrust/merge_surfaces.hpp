@@ -10,6 +10,8 @@
 // Throws Error(Usage) when `parts` is empty.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <span>
 #include <string>
 
@@ -17,11 +19,11 @@
 
 namespace vorocrust {
 
-struct NamedSurface {
+struct VOROCRUST_API NamedSurface {
   std::string name;
   SurfaceMesh mesh;
 };
 
-SurfaceMesh merge_surfaces(std::span<const NamedSurface> parts);
+VOROCRUST_API SurfaceMesh merge_surfaces(std::span<const NamedSurface> parts);
 
 }  // namespace vorocrust

@@ -5,6 +5,8 @@
 // than two; genus and enclosed volume are given only where both hold.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <Eigen/Geometry>
 #include <cstddef>
 #include <optional>
@@ -15,7 +17,7 @@
 
 namespace vorocrust {
 
-struct ComponentInfo {
+struct VOROCRUST_API ComponentInfo {
   std::size_t faces = 0;
   std::size_t vertices = 0;
   std::size_t edges = 0;
@@ -31,13 +33,13 @@ struct ComponentInfo {
   double area = 0.0;
 };
 
-struct GroupInfo {
+struct VOROCRUST_API GroupInfo {
   std::string name;
   std::string source_file;
   std::size_t faces = 0;
 };
 
-struct MeshInfo {
+struct VOROCRUST_API MeshInfo {
   std::size_t vertices = 0;
   std::size_t faces = 0;
   std::size_t edges = 0;
@@ -50,6 +52,6 @@ struct MeshInfo {
   double area = 0.0;
 };
 
-MeshInfo mesh_info(const SurfaceMesh& mesh);
+VOROCRUST_API MeshInfo mesh_info(const SurfaceMesh& mesh);
 
 }  // namespace vorocrust

@@ -5,12 +5,14 @@
 // next check, writing nothing. Callbacks are invoked from the calling thread only.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <functional>
 #include <string_view>
 
 namespace vorocrust {
 
-struct ProgressUpdate {
+struct VOROCRUST_API ProgressUpdate {
   std::string_view phase;
   double fraction = -1.0;
 };

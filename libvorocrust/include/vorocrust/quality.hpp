@@ -28,6 +28,8 @@
 // Nothing here yields NaN: degenerate triangles are measured like any other.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -40,7 +42,7 @@ namespace vorocrust {
 
 inline constexpr double kNegligibleRelativeDistance = 1e-9;
 
-struct SurfaceTopology {
+struct VOROCRUST_API SurfaceTopology {
   std::size_t components = 0;
   // Per component, components in order of their smallest face index.
   std::vector<long> euler_characteristic;
@@ -49,12 +51,12 @@ struct SurfaceTopology {
   std::size_t non_manifold_edges = 0;  // edges with three or more faces
 };
 
-SurfaceTopology surface_topology(const SurfaceMesh& mesh);
+VOROCRUST_API SurfaceTopology surface_topology(const SurfaceMesh& mesh);
 
 // Same number of components and the same multiset of (Euler characteristic, closed) pairs.
-bool same_topology(const SurfaceTopology& a, const SurfaceTopology& b);
+VOROCRUST_API bool same_topology(const SurfaceTopology& a, const SurfaceTopology& b);
 
-struct QualityOptions {
+struct VOROCRUST_API QualityOptions {
   // Random points per surface, on top of its vertices and edge midpoints. With the default a
   // surface of 100 000 triangles is measured against itself in about half a second of one core
   // (bench/RESULTS.md).
@@ -72,13 +74,13 @@ inline std::optional<double> percent_change(const std::optional<double>& before,
   return 100 * (*after - *before) / *before;
 }
 
-struct RegionVolume {
+struct VOROCRUST_API RegionVolume {
   std::string name;
   std::optional<double> input, output;  // unset where that surface has no region of this name
   std::optional<double> change_percent() const { return percent_change(input, output); }
 };
 
-struct SurfaceQuality {
+struct VOROCRUST_API SurfaceQuality {
   std::size_t triangles = 0;  // of the output
   double min_angle_degrees = 0, max_angle_degrees = 0;
   double percent_angles_below_30 = 0, percent_angles_above_90 = 0;  // of all 3 x triangles angles
@@ -108,11 +110,11 @@ struct SurfaceQuality {
 // The triangle quality Q of every face of `mesh`, in face order, as defined above: what the
 // front ends show per face (MeshLab's per-face quality), the figures measure_surface_quality
 // summarises.
-std::vector<double> triangle_qualities(const SurfaceMesh& mesh);
+VOROCRUST_API std::vector<double> triangle_qualities(const SurfaceMesh& mesh);
 
 // Throws Error(InvalidGeometry) when either surface has no triangle or the input has no extent
 // (every vertex at one point), Error(Usage) for options out of range.
-SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMesh& output,
+VOROCRUST_API SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMesh& output,
                                        const QualityOptions& options = {});
 
 }  // namespace vorocrust

@@ -9,6 +9,8 @@
 // "> high". Numbers are written the same whatever the program's locale.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -17,7 +19,7 @@
 
 namespace vorocrust {
 
-struct HistogramPanel {
+struct VOROCRUST_API HistogramPanel {
   std::string label;                // what is counted, with its unit: "triangle quality Q"
   double low = 0, high = 1;         // the bins split [low, high] evenly
   std::vector<std::size_t> counts;  // one per bin, at least one bin
@@ -27,17 +29,17 @@ struct HistogramPanel {
 
 struct SurfaceQuality;
 // The triangle-quality panel of OUTDIR/quality.svg.
-HistogramPanel surface_quality_panel(const SurfaceQuality& quality);
+VOROCRUST_API HistogramPanel surface_quality_panel(const SurfaceQuality& quality);
 
 struct CellQuality;
 // The cell aspect-ratio panel of OUTDIR/quality.svg, with the cells above its range as overflow.
-HistogramPanel cell_quality_panel(const CellQuality& quality);
+VOROCRUST_API HistogramPanel cell_quality_panel(const CellQuality& quality);
 
 // The picture as text. Throws Error(Usage) for a panel without bins or with high <= low.
-std::string histogram_svg(const std::string& title, const std::vector<HistogramPanel>& panels);
+VOROCRUST_API std::string histogram_svg(const std::string& title, const std::vector<HistogramPanel>& panels);
 
 // The same, written atomically to `path` (atomic_file.hpp); throws Error(Output) when it cannot be.
-void write_histogram_svg(const std::filesystem::path& path, const std::string& title,
+VOROCRUST_API void write_histogram_svg(const std::filesystem::path& path, const std::string& title,
                          const std::vector<HistogramPanel>& panels);
 
 }  // namespace vorocrust

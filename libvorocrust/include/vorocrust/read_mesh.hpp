@@ -10,6 +10,8 @@
 // finite; otherwise throws vorocrust::Error naming the file and line (or byte offset).
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,14 +23,14 @@ namespace vorocrust {
 enum class MeshFormat { Off, Obj, Stl, Ply };
 
 // Throws Error(UnreadableInput) when the extension is none of .off .obj .stl .ply.
-MeshFormat format_from_extension(const std::filesystem::path& path);
+VOROCRUST_API MeshFormat format_from_extension(const std::filesystem::path& path);
 
-SurfaceMesh read_mesh(const std::filesystem::path& path);
+VOROCRUST_API SurfaceMesh read_mesh(const std::filesystem::path& path);
 
 // Several files merge into one model. Each file becomes its own group (its `o`/`g` groups or
 // STL solids, when it has several, keep their names prefixed by the file's stem). A vertex with
 // exactly the coordinates of one read from an earlier file is shared, so solids that touch
 // along common faces stay connected.
-SurfaceMesh read_meshes(const std::vector<std::filesystem::path>& paths);
+VOROCRUST_API SurfaceMesh read_meshes(const std::vector<std::filesystem::path>& paths);
 
 }  // namespace vorocrust

@@ -20,6 +20,8 @@
 // label. The returned summary is indexed by label.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -28,16 +30,16 @@
 
 namespace vorocrust {
 
-struct RegionSummary {
+struct VOROCRUST_API RegionSummary {
   std::string name;
   std::size_t pieces = 0;  // connected regions of space with this label
   std::size_t sides = 0;   // face sides facing them
   double volume = 0;       // the bounded pieces' enclosed volume (label 0: its bounded pieces only)
 };
 
-std::vector<RegionSummary> label_regions(SurfaceMesh& mesh);
+VOROCRUST_API std::vector<RegionSummary> label_regions(SurfaceMesh& mesh);
 
 // The summary label_regions gives, leaving `mesh` as it is (for reports on an input).
-std::vector<RegionSummary> find_regions(const SurfaceMesh& mesh);
+VOROCRUST_API std::vector<RegionSummary> find_regions(const SurfaceMesh& mesh);
 
 }  // namespace vorocrust

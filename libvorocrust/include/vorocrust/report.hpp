@@ -3,6 +3,8 @@
 // thing.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -10,7 +12,9 @@
 #include "vorocrust/cell_quality.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/mesh_info.hpp"
-#include "vorocrust/mesher.hpp"
+#include "vorocrust/mesh_result.hpp"
+#include "vorocrust/options.hpp"
+#include "vorocrust/stats.hpp"
 #include "vorocrust/quality.hpp"
 #include "vorocrust/validate.hpp"
 
@@ -19,11 +23,11 @@ namespace vorocrust {
 // One JSON object: counts, components, groups, regions, bounding box, shell volumes, findings;
 // for an input validation accepts, "region_details" (find_regions: per label its name, pieces,
 // sides and volume) or "region_error" (why the regions contradict the input's labels).
-std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh& mesh, const MeshInfo& info,
+VOROCRUST_API std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh& mesh, const MeshInfo& info,
                       const ValidationReport& validation, int indent = 2);
 
 // What OUTDIR/report.json holds for one `mesh` run, whatever its outcome.
-struct RunReport {
+struct VOROCRUST_API RunReport {
   std::vector<std::string> command;  // argv as given
   std::vector<std::string> inputs;
   MeshOptions options;
@@ -38,41 +42,41 @@ struct RunReport {
   std::string message;  // one line; empty on success
 };
 
-std::string run_report_json(const RunReport& report, int indent = 2);
+VOROCRUST_API std::string run_report_json(const RunReport& report, int indent = 2);
 
 // The `inputs` list of an OUTDIR/report.json, as the run was given them (relative paths are
 // relative to the folder that run started in). Throws Error(UnreadableInput) naming the file
 // when it is missing, is not JSON or has no list of input paths.
-std::vector<std::string> run_report_inputs(const std::filesystem::path& report_json);
+VOROCRUST_API std::vector<std::string> run_report_inputs(const std::filesystem::path& report_json);
 
 // The surface a mesh run started from, as its OUTDIR/report.json records it: `options.box` and
 // `options.self_intersections` set from its "options" (those it does not hold keep their
 // defaults). Throws Error(UnreadableInput) naming the file when it is missing or is not JSON, or
 // holds a box or mode of the wrong form.
-MeshOptions run_report_domain(const std::filesystem::path& report_json);
+VOROCRUST_API MeshOptions run_report_domain(const std::filesystem::path& report_json);
 
 // The region names of a mesh run's OUTDIR/report.json ("surface": {"regions"}), by label; empty
 // when the file is missing, unreadable or names none (the seeds then go unnamed).
-std::vector<std::string> run_report_regions(const std::filesystem::path& report_json);
+VOROCRUST_API std::vector<std::string> run_report_regions(const std::filesystem::path& report_json);
 
 // The surface-quality figures (quality.hpp) as one JSON object, every key saying its unit:
 // angles in degrees, shares in percent, distances in the input's units and in percent of its
 // bounding-box diagonal.
-std::string surface_quality_json(const SurfaceQuality& quality, int indent = 2);
+VOROCRUST_API std::string surface_quality_json(const SurfaceQuality& quality, int indent = 2);
 
 // The volume-quality figures (cell_quality.hpp) as one JSON object: count, aspect ratio (min,
 // mean, max, the worst cell and its seed, the histogram with its overflow), volume, face count,
 // shortest relative edge. Totals over the cells, not the per-cell list. An infinite aspect ratio
 // (a cell without interior) is written as null, JSON having no infinity.
-std::string cell_quality_json(const CellQuality& quality, int indent = 2);
+VOROCRUST_API std::string cell_quality_json(const CellQuality& quality, int indent = 2);
 
 // What `vorocrust quality OUTDIR --json` prints: the surface figures as surface_quality_json
 // gives them, at the top level, when the surface was measured, and the cell figures under
 // "cells" when the cells were. At least one of the two.
-std::string quality_json(const SurfaceQuality* surface, const CellQuality* cells, int indent = 2);
+VOROCRUST_API std::string quality_json(const SurfaceQuality* surface, const CellQuality* cells, int indent = 2);
 
 // What OUTDIR/report.json holds after one `cells` run.
-struct CellsReport {
+struct VOROCRUST_API CellsReport {
   std::vector<std::string> command;  // argv as given
   std::string seeds_file;
   std::size_t seeds = 0;
@@ -89,6 +93,20 @@ struct CellsReport {
 // "inputs"), that report with only its "cells" object replaced by this run's, which then also
 // names "seeds_file", "command" and "timings" of the rebuild: the run's inputs, options and
 // surface figures stay, so `vorocrust quality OUTDIR` still finds the model.
-std::string cells_report_json(const CellsReport& report, int indent = 2);
+VOROCRUST_API std::string cells_report_json(const CellsReport& report, int indent = 2);
+
+// What a run says about itself, a line each, as every front end shows it (run_job's summary):
+// the balls and features, the surface and its figures, the cells and theirs, as far as the run
+// went.
+VOROCRUST_API std::vector<std::string> run_summary(const MeshResult& result, const MeshOptions& options);
+// What the run changed in its input that the user should know: self-intersections cut, smoothing
+// rounds refused.
+VOROCRUST_API std::vector<std::string> run_warnings(const MeshResult& result);
+// How orthogonal the faces are to their seed links, and checkMesh's figures against the cell
+// centroids, in one line, so that the two are never confused.
+VOROCRUST_API std::string face_figures_line(const CellQuality& quality);
+// "wrote FOLDER/mesh.vtu (open it in ParaView)" and the like, for the volume formats among
+// `formats`.
+VOROCRUST_API std::vector<std::string> written_lines(const std::filesystem::path& folder, const std::vector<OutputFormat>& formats);
 
 }  // namespace vorocrust

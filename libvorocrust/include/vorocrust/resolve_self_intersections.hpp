@@ -22,13 +22,15 @@
 // along. A mesh that does not cut itself is returned as it is.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstddef>
 
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust {
 
-struct SelfIntersectionStats {
+struct VOROCRUST_API SelfIntersectionStats {
   std::size_t face_pairs = 0;     // pairs of input faces that crossed or touched
   std::size_t faces_cut = 0;      // input faces split along an intersection curve
   std::size_t points_added = 0;   // new vertices on the intersection curves
@@ -36,6 +38,6 @@ struct SelfIntersectionStats {
   std::size_t faces = 0;          // faces of the result
 };
 
-SurfaceMesh resolve_self_intersections(const SurfaceMesh& mesh, SelfIntersectionStats* stats = nullptr);
+VOROCRUST_API SurfaceMesh resolve_self_intersections(const SurfaceMesh& mesh, SelfIntersectionStats* stats = nullptr);
 
 }  // namespace vorocrust

@@ -6,6 +6,8 @@
 // whole mesh in compact form: the Voronoi cells follow from them.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -25,17 +27,17 @@ namespace vorocrust {
 // rather than sampled, so the sampler's rules (clearance, Lipschitz radii) do not bind it.
 enum class SeedKind : std::uint8_t { Surface, Interior, Outside, Cap, Repair };
 
-const char* to_string(SeedKind kind) noexcept;
+VOROCRUST_API const char* to_string(SeedKind kind) noexcept;
 // The kind to_string names `name`, if any.
-std::optional<SeedKind> seed_kind_named(std::string_view name) noexcept;
+VOROCRUST_API std::optional<SeedKind> seed_kind_named(std::string_view name) noexcept;
 // Every kind's name, for messages: "surface, interior, outside, cap or repair".
-std::string seed_kind_names();
+VOROCRUST_API std::string seed_kind_names();
 
 // Regions when the input names none: its closed shells bound one material.
 inline constexpr std::int32_t kOutsideRegion = 0;
 inline constexpr std::int32_t kInsideRegion = 1;
 
-struct Seed {
+struct VOROCRUST_API Seed {
   Point position;
   std::int32_t region = kOutsideRegion;
   double radius = 0;  // surface seeds: the mean radius of their three balls
@@ -44,12 +46,12 @@ struct Seed {
 
 // OUTDIR/seeds.csv: `x,y,z,label,radius,kind` (kind as to_string names it), 17 significant
 // digits, written atomically.
-void write_seeds_csv(const std::vector<Seed>& seeds, const std::filesystem::path& path);
+VOROCRUST_API void write_seeds_csv(const std::vector<Seed>& seeds, const std::filesystem::path& path);
 
 // Reads what write_seeds_csv writes: the header line `x,y,z,label,radius,kind`, then one seed a
 // line (blank lines skipped). Throws Error(UnreadableInput) naming the file and line of the
 // first bad line: a missing or wrong header, a field count other than six, a number that does
 // not parse or is not finite, a label out of the 32-bit range, a kind to_string names none of.
-std::vector<Seed> read_seeds_csv(const std::filesystem::path& path);
+VOROCRUST_API std::vector<Seed> read_seeds_csv(const std::filesystem::path& path);
 
 }  // namespace vorocrust

@@ -13,6 +13,8 @@
 // triangle, a repeated corner or a coordinate that is NaN or infinite.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstdint>
 #include <span>
 #include <string>
@@ -21,7 +23,7 @@
 
 namespace vorocrust {
 
-SurfaceMesh surface_from_arrays(std::span<const double> coordinates, std::span<const std::int64_t> corners,
+VOROCRUST_API SurfaceMesh surface_from_arrays(std::span<const double> coordinates, std::span<const std::int64_t> corners,
                                 const std::string& name);
 
 }  // namespace vorocrust

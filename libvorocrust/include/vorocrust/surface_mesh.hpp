@@ -9,6 +9,8 @@
 // `face_regions[f]` holds their indices into `region_names`; otherwise `face_regions` is empty.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>  // cross products on Point
 #include <array>
@@ -23,7 +25,7 @@ using Point = Eigen::Vector3d;
 using Triangle = std::array<Index, 3>;
 
 // The two regions a triangle separates; kUnknownRegion where the input does not say.
-struct RegionPair {
+struct VOROCRUST_API RegionPair {
   static constexpr std::int32_t kUnknownRegion = -1;
   std::int32_t back = kUnknownRegion;
   std::int32_t front = kUnknownRegion;
@@ -31,12 +33,12 @@ struct RegionPair {
 };
 
 // A named set of faces: an OBJ `o`/`g` group, an STL solid, or a whole input file.
-struct FaceGroup {
+struct VOROCRUST_API FaceGroup {
   std::string name;
   std::string source_file;  // the file the group was read from
 };
 
-struct SurfaceMesh {
+struct VOROCRUST_API SurfaceMesh {
   std::vector<Point> vertices;
   std::vector<Triangle> triangles;
   std::vector<Index> face_group;  // one per triangle, index into `groups`
@@ -57,9 +59,9 @@ struct SurfaceMesh {
 };
 
 // Where a face came from, "bunny.off line 12 (face 7)", for messages.
-std::string describe_face(const SurfaceMesh& mesh, std::size_t face);
+VOROCRUST_API std::string describe_face(const SurfaceMesh& mesh, std::size_t face);
 
 // A point as messages give it, "(0.1, -2, 3.25)", to 9 significant digits.
-std::string describe_point(const Point& p);
+VOROCRUST_API std::string describe_point(const Point& p);
 
 }  // namespace vorocrust

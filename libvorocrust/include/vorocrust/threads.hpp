@@ -4,11 +4,13 @@
 // Results never depend on the thread count.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <memory>
 
 namespace vorocrust {
 
-class ThreadLimit {
+class VOROCRUST_API ThreadLimit {
  public:
   explicit ThreadLimit(int threads);
   ~ThreadLimit();

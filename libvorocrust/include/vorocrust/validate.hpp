@@ -10,6 +10,8 @@
 // turned so its normals point out of the volume it encloses. Everything else is only reported.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -19,7 +21,7 @@
 
 namespace vorocrust {
 
-struct Finding {
+struct VOROCRUST_API Finding {
   enum class Severity {
     Note,     // worth knowing, harmless
     Fixed,    // was wrong, has been repaired in place
@@ -34,9 +36,9 @@ struct Finding {
   std::vector<std::pair<std::size_t, std::size_t>> face_pairs;  // for pairwise findings
 };
 
-const char* to_string(Finding::Severity severity) noexcept;
+VOROCRUST_API const char* to_string(Finding::Severity severity) noexcept;
 
-struct ValidationOptions {
+struct VOROCRUST_API ValidationOptions {
   bool fix_orientation = true;
   bool check_self_intersections = true;
   // Whether intersecting faces are an Error (meshing refuses them) or a Warning (the mesher
@@ -45,12 +47,12 @@ struct ValidationOptions {
   std::size_t max_listed = 20;  // faces or pairs named per finding
 };
 
-struct ValidationReport {
+struct VOROCRUST_API ValidationReport {
   std::vector<Finding> findings;
   bool has_errors() const;
   const Finding* find(const std::string& code) const;
 };
 
-ValidationReport validate(SurfaceMesh& mesh, const ValidationOptions& options = {});
+VOROCRUST_API ValidationReport validate(SurfaceMesh& mesh, const ValidationOptions& options = {});
 
 }  // namespace vorocrust

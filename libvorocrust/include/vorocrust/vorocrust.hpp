@@ -1,15 +1,21 @@
 // vorocrust/vorocrust.hpp — everything a program linking libvorocrust needs.
 #pragma once
 
+#include "vorocrust/api.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/cell_quality.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
+#include "vorocrust/job.hpp"
 #include "vorocrust/face_orthogonality.hpp"
 #include "vorocrust/face_skewness.hpp"
 #include "vorocrust/merge_surfaces.hpp"
 #include "vorocrust/mesh_info.hpp"
+#include "vorocrust/mesh_result.hpp"
 #include "vorocrust/mesher.hpp"
+#include "vorocrust/modes.hpp"
+#include "vorocrust/options.hpp"
+#include "vorocrust/outputs.hpp"
 #include "vorocrust/progress.hpp"
 #include "vorocrust/quality.hpp"
 #include "vorocrust/quality_svg.hpp"

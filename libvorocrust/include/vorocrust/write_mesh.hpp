@@ -6,17 +6,19 @@
 // when the mesh has region labels, and OBJ groups named "BACK|FRONT" carry them the same way.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <filesystem>
 
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust {
 
-struct WriteOptions {
+struct VOROCRUST_API WriteOptions {
   bool ascii = false;
 };
 
-void write_mesh(const SurfaceMesh& mesh, const std::filesystem::path& path,
+VOROCRUST_API void write_mesh(const SurfaceMesh& mesh, const std::filesystem::path& path,
                 const WriteOptions& options = {});
 
 }  // namespace vorocrust

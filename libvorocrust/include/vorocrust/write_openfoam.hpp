@@ -18,12 +18,14 @@
 // `checkMesh -case DIR` runs on the result as it is.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <filesystem>
 
 #include "vorocrust/cells.hpp"
 
 namespace vorocrust {
 
-void write_openfoam_case(const VoronoiMesh& mesh, const std::filesystem::path& case_dir);
+VOROCRUST_API void write_openfoam_case(const VoronoiMesh& mesh, const std::filesystem::path& case_dir);
 
 }  // namespace vorocrust

@@ -14,12 +14,14 @@
 // atomically; throws Error(Output) when one cannot be.
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <filesystem>
 
 #include "vorocrust/cells.hpp"
 
 namespace vorocrust {
 
-void write_pflotran(const VoronoiMesh& mesh, const std::filesystem::path& folder);
+VOROCRUST_API void write_pflotran(const VoronoiMesh& mesh, const std::filesystem::path& folder);
 
 }  // namespace vorocrust

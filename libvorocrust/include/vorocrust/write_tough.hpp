@@ -20,6 +20,8 @@
 // mesh has more cells than the names can tell apart (3 369 600).
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <filesystem>
 #include <map>
 #include <string>
@@ -28,10 +30,10 @@
 
 namespace vorocrust {
 
-void write_tough_mesh(const VoronoiMesh& mesh, const std::filesystem::path& path);
+VOROCRUST_API void write_tough_mesh(const VoronoiMesh& mesh, const std::filesystem::path& path);
 
 // The five-character TOUGH name of cell `cell`, and the material name of each region.
-std::string tough_element_name(std::size_t cell);
-std::map<std::int32_t, std::string> tough_material_names(const VoronoiMesh& mesh);
+VOROCRUST_API std::string tough_element_name(std::size_t cell);
+VOROCRUST_API std::map<std::int32_t, std::string> tough_material_names(const VoronoiMesh& mesh);
 
 }  // namespace vorocrust

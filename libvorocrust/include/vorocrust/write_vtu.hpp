@@ -11,6 +11,8 @@
 // here (a third of the time compute_cells takes).
 #pragma once
 
+#include "vorocrust/api.hpp"
+
 #include <filesystem>
 
 #include "vorocrust/cell_quality.hpp"
@@ -18,6 +20,6 @@
 
 namespace vorocrust {
 
-void write_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path, const CellQuality* quality = nullptr);
+VOROCRUST_API void write_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path, const CellQuality* quality = nullptr);
 
 }  // namespace vorocrust

@@ -12,11 +12,11 @@
 
 #include "cells/cell_faces.hpp"
 #include "cells/growing_cells.hpp"
-#include "cells/polygon_measures.hpp"
+#include "geometry/polygon_measures.hpp"
 #include "cells/voronoi_cells.hpp"
 #include "cells/weld_vertices.hpp"
 #include "geometry/curve_order.hpp"
-#include "quality/cell_spheres.hpp"
+#include "geometry/cell_spheres.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
 
@@ -215,7 +215,7 @@ void measure_cells(VoronoiMesh& mesh) {
     Point moment = Point::Zero();
     for (Index id : cell.faces) {
       const VoronoiFace& face = mesh.faces[id];
-      cells::add_cone(
+      geometry::add_cone(
           apex, face.points.size(), [&](std::size_t k) -> const Point& { return mesh.points[face.points[k]]; },
           face.owner == static_cast<std::int32_t>(c), volume, moment);
     }
@@ -334,7 +334,7 @@ Point centroid_of(const RawCell& cell) {
   double volume = 0;
   Point moment = Point::Zero();
   for (std::size_t f = 0; f < cell.num_faces(); ++f) {
-    add_cone(cell.vertices.front(), face_size(cell, f), face_points(cell, f), true, volume, moment);
+    geometry::add_cone(cell.vertices.front(), face_size(cell, f), face_points(cell, f), true, volume, moment);
   }
   return moment / volume;
 }
@@ -347,7 +347,7 @@ double aspect_ratio_above(const RawCell& cell, const Point& s) {
   double farthest = 0, nearest = std::numeric_limits<double>::infinity();
   for (const Point& v : cell.vertices) farthest = std::max(farthest, (v - s).squaredNorm());
   for (std::size_t f = 0; f < cell.num_faces(); ++f) {
-    const FaceGeometry g = polygon_geometry(face_size(cell, f), face_points(cell, f));
+    const FaceGeometry g = geometry::polygon_geometry(face_size(cell, f), face_points(cell, f));
     nearest = std::min(nearest, std::abs(g.normal.dot(g.centroid - s)));
   }
   return nearest > 0 ? std::sqrt(farthest) / nearest : std::numeric_limits<double>::infinity();
@@ -369,7 +369,7 @@ std::vector<LongCell> GrowingCells::long_cells(double bound) {
       aspect_ratio_[c] = aspect_ratio_above(cell, frame_.normalized[cell_seeds_[c]]);
       if (aspect_ratio_[c] * (1 + 1e-9) <= bound) return;
       aspect_ratio_[c] =
-          quality::cell_spheres(cell.vertices, cell.num_faces(), [&](std::size_t f) { return face_size(cell, f); },
+          geometry::cell_spheres(cell.vertices, cell.num_faces(), [&](std::size_t f) { return face_size(cell, f); },
                                 [&](std::size_t f, std::size_t k) -> const Point& { return face_points(cell, f)(k); })
               .aspect_ratio();
     });
@@ -406,10 +406,10 @@ std::vector<CutFace> GrowingCells::skew_faces(double threshold) {
         const std::int32_t d = across >= 0 ? cell_of_seed_[static_cast<std::size_t>(across)] : kNoCell;
         if (d != kNoCell && d < static_cast<std::int32_t>(c)) continue;  // the lower cell has it
         if (!(spans_an_area(cell, f, frame_.normalized[cell_seeds_[c]]))) continue;  // welded away
-        CutFace face{cell_seeds_[c], across, d != kNoCell, polygon_geometry(size(cell, f), point_at(cell, f)), 0};
+        CutFace face{cell_seeds_[c], across, d != kNoCell, geometry::polygon_geometry(size(cell, f), point_at(cell, f)), 0};
         const std::optional<Point> neighbour =
             d != kNoCell ? std::optional<Point>(centroid_[static_cast<std::size_t>(d)]) : std::nullopt;
-        face.skewness = polygon_skewness(size(cell, f), point_at(cell, f), face.geometry, centroid_[c], neighbour);
+        face.skewness = geometry::polygon_skewness(size(cell, f), point_at(cell, f), face.geometry, centroid_[c], neighbour);
         if (!(face.skewness > threshold)) continue;
         face.geometry.centroid = original(face.geometry.centroid);
         face.geometry.area *= frame_.scale * frame_.scale;
@@ -627,7 +627,7 @@ std::size_t count_interior_faces(const VoronoiMesh& mesh) {
 
 FaceGeometry face_geometry(const VoronoiMesh& mesh, std::size_t face) {
   const std::vector<Index>& polygon = mesh.faces[face].points;
-  return cells::polygon_geometry(polygon.size(), [&](std::size_t k) -> const Point& { return mesh.points[polygon[k]]; });
+  return geometry::polygon_geometry(polygon.size(), [&](std::size_t k) -> const Point& { return mesh.points[polygon[k]]; });
 }
 
 std::string region_name(const VoronoiMesh& mesh, std::int32_t label) {

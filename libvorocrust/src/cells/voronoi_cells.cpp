@@ -13,7 +13,7 @@
 #include <voro++.hh>
 
 #include "geometry/curve_order.hpp"
-#include "refinement/point_cloud.hpp"
+#include "geometry/point_cloud.hpp"
 #include "vorocrust/error.hpp"
 
 namespace vorocrust::cells {

@@ -26,7 +26,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "refinement/point_cloud.hpp"
+#include "geometry/point_cloud.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust::cells {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "export/region_words.hpp"
-#include "export/text_numbers.hpp"
+#include "io/text_numbers.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
 

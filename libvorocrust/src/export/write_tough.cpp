@@ -6,7 +6,7 @@
 #include <cmath>
 #include <set>
 
-#include "export/text_numbers.hpp"
+#include "io/text_numbers.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
 

@@ -1,9 +1,9 @@
 #include "vorocrust/write_volume_mesh.hpp"
 
 #include <algorithm>
-#include <array>
 
 #include "vorocrust/error.hpp"
+#include "vorocrust/outputs.hpp"
 #include "vorocrust/write_openfoam.hpp"
 #include "vorocrust/write_pflotran.hpp"
 #include "vorocrust/write_tough.hpp"
@@ -13,57 +13,50 @@ namespace vorocrust {
 
 namespace {
 
-constexpr std::array<VolumeFormat, 4> kFormats = {{
-    {"vtu", "mesh.vtu"},
-    {"openfoam", "case"},
-    {"tough", "MESH"},
-    {"pflotran", "pflotran"},
-}};
-
-const VolumeFormat& format_named(const std::string& name) {
-  for (const VolumeFormat& f : kFormats) {
-    if (name == f.name) return f;
+const OutputFormatSpec& volume_format_named(std::string_view name) {
+  const std::optional<OutputFormat> format = parse_output_format(name);
+  if (!format || !output_format(*format).volume) {
+    std::string known;
+    for (const std::string& n : volume_format_names()) known += (known.empty() ? "" : ", ") + n;
+    throw Error(Error::Kind::Usage, "unknown volume format '" + std::string(name) + "': expected " + known);
   }
-  throw Error(Error::Kind::Usage, "unknown volume format '" + name + "': expected vtu, openfoam, tough or pflotran");
+  return output_format(*format);
 }
 
 }  // namespace
 
-void write_volume_format(const VoronoiMesh& mesh, const std::filesystem::path& folder, const std::string& format,
+void write_volume_format(const VoronoiMesh& mesh, const std::filesystem::path& folder, std::string_view format,
                          const CellQuality* quality) {
-  const VolumeFormat& f = format_named(format);
-  const std::filesystem::path where = folder / f.output;
-  if (format == "vtu") write_vtu(mesh, where, quality);
-  else if (format == "openfoam") write_openfoam_case(mesh, where);
-  else if (format == "tough") write_tough_mesh(mesh, where);
-  else write_pflotran(mesh, where);
+  const OutputFormatSpec& f = volume_format_named(format);
+  const std::filesystem::path where = folder / std::string(f.files[0]);
+  switch (f.format) {
+    case OutputFormat::Vtu: write_vtu(mesh, where, quality); break;
+    case OutputFormat::OpenFoam: write_openfoam_case(mesh, where); break;
+    case OutputFormat::Tough: write_tough_mesh(mesh, where); break;
+    case OutputFormat::Pflotran: write_pflotran(mesh, where); break;
+    default: break;
+  }
 }
-
-std::span<const VolumeFormat> volume_formats() { return kFormats; }
 
 std::vector<std::string> volume_format_names() {
   std::vector<std::string> names;
-  for (const VolumeFormat& f : kFormats) names.emplace_back(f.name);
+  for (const OutputFormatSpec& f : output_formats()) {
+    if (f.volume) names.emplace_back(f.name);
+  }
   return names;
 }
 
 void write_volume_mesh(const VoronoiMesh& mesh, const std::filesystem::path& folder,
                        const std::vector<std::string>& formats, const CellQuality* quality) {
-  for (const std::string& name : formats) format_named(name);
-  for (const VolumeFormat& f : kFormats) {
+  for (const std::string& name : formats) volume_format_named(name);
+  for (const OutputFormatSpec& f : output_formats()) {
+    if (!f.volume) continue;
     if (std::find(formats.begin(), formats.end(), f.name) != formats.end()) {
       write_volume_format(mesh, folder, f.name, quality);
     } else {
       std::error_code ignored;
-      std::filesystem::remove_all(folder / f.output, ignored);
+      std::filesystem::remove_all(folder / std::string(f.files[0]), ignored);
     }
-  }
-}
-
-void remove_volume_outputs(const std::filesystem::path& folder) {
-  for (const VolumeFormat& f : kFormats) {
-    std::error_code ignored;
-    std::filesystem::remove_all(folder / f.output, ignored);
   }
 }
 

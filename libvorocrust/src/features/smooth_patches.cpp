@@ -84,8 +84,11 @@ std::size_t find_root(std::vector<std::size_t>& parent, std::size_t x) {
 // assumes one fan, and moving such a vertex would blend unrelated sheets.
 std::vector<bool> pinched_vertices(const SurfaceMesh& mesh, const EdgeTopology& topo) {
   // Union the corners (face, slot) of the faces on both sides of each manifold edge, per end.
-  std::vector<std::size_t> parent(3 * mesh.num_faces());
-  std::iota(parent.begin(), parent.end(), std::size_t{0});
+  // Filled one by one: a zero-filled vector made here trips GCC 12's -Warray-bounds (a false
+  // positive about the memset of an empty mesh's vector).
+  std::vector<std::size_t> parent;
+  parent.reserve(3 * mesh.num_faces());
+  for (std::size_t c = 0; c < 3 * mesh.num_faces(); ++c) parent.push_back(c);
   for (std::size_t e = 0; e < topo.num_edges(); ++e) {
     if (topo.valence(e) != 2) continue;
     const auto faces = topo.faces_of(e);

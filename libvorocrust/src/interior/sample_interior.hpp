@@ -32,8 +32,9 @@
 #include <vector>
 
 #include "geometry/box_tree.hpp"
-#include "vorocrust/mesher.hpp"
+#include "vorocrust/modes.hpp"
 #include "vorocrust/progress.hpp"
+#include "vorocrust/stats.hpp"
 #include "vorocrust/seeds.hpp"
 
 namespace vorocrust {

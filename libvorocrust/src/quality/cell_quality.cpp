@@ -11,7 +11,7 @@
 #include <string>
 
 #include "quality/face_figures.hpp"
-#include "quality/cell_spheres.hpp"
+#include "geometry/cell_spheres.hpp"
 #include "vorocrust/cell_quality.hpp"
 #include "vorocrust/face_skewness.hpp"
 #include "vorocrust/error.hpp"
@@ -66,7 +66,7 @@ CellShape measure_cell(const VoronoiMesh& mesh, const VoronoiCell& cell) {
   std::vector<Point> points;
   points.reserve(ids.size());
   for (Index p : ids) points.push_back(mesh.points[p]);
-  const quality::CellSpheres spheres = quality::cell_spheres(
+  const geometry::CellSpheres spheres = geometry::cell_spheres(
       std::move(points), cell.faces.size(), [&](std::size_t f) { return mesh.faces[cell.faces[f]].points.size(); },
       [&](std::size_t f, std::size_t k) -> const Point& { return mesh.points[mesh.faces[cell.faces[f]].points[k]]; });
   shape.circumcentre = spheres.outer.centre;

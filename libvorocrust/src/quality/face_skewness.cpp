@@ -5,7 +5,7 @@
 
 #include <tbb/parallel_for.h>
 
-#include "cells/polygon_measures.hpp"
+#include "geometry/polygon_measures.hpp"
 #include "quality/face_figures.hpp"
 
 namespace vorocrust {
@@ -15,7 +15,7 @@ double quality::face_skewness(const VoronoiMesh& mesh, std::size_t face, const F
   const auto at = [&](std::size_t k) -> const Point& { return mesh.points[f.points[k]]; };
   const std::optional<Point> neighbour =
       f.neighbour != kNoCell ? std::optional<Point>(mesh.cells[f.neighbour].centroid) : std::nullopt;
-  return cells::polygon_skewness(f.points.size(), at, g, mesh.cells[f.owner].centroid, neighbour);
+  return geometry::polygon_skewness(f.points.size(), at, g, mesh.cells[f.owner].centroid, neighbour);
 }
 
 double face_skewness(const VoronoiMesh& mesh, std::size_t face) {

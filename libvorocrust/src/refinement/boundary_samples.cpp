@@ -12,7 +12,7 @@
 #include "geometry/box_tree.hpp"
 #include "geometry/closest_point.hpp"
 #include "geometry/surface_sampling.hpp"
-#include "refinement/point_cloud.hpp"
+#include "geometry/point_cloud.hpp"
 #include "refinement/subface.hpp"
 
 namespace vorocrust {

@@ -216,7 +216,7 @@ class BallRefinement::Impl {
   const SurfaceMesh& mesh_;
   const Strata& strata_;
   const SizingField& sizing_;
-  const RefinementOptions& options_;
+  const RefinementOptions options_;  // a copy: callers pass temporaries
   const ProgressCallback& progress_;
   RefinementStats& stats_;
   CoSmoothness cosmooth_;

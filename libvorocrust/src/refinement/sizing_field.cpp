@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "io/byte_source.hpp"
-#include "refinement/point_cloud.hpp"
+#include "geometry/point_cloud.hpp"
 
 namespace vorocrust {
 

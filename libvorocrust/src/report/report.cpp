@@ -208,6 +208,30 @@ std::pair<json, double> timings_object(const std::vector<PhaseTiming>& timings) 
   return {list, total};
 }
 
+// The options in force, by their table names; a quantity with a unit has it in its key
+// ("sharp_angle_degrees"), and an option unset without a default is null.
+json options_object(const MeshOptions& options) {
+  json doc = json::object();
+  for (const auto& [name, value] : options_in_force(options)) {
+    const OptionSpec& spec = *find_option(name);
+    std::string key(name);
+    if (!spec.unit.empty()) {
+      key += '_';
+      key += spec.unit;
+    }
+    doc[key] = std::visit(
+        [](const auto& v) -> json {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>) {
+            return nullptr;
+          } else {
+            return v;
+          }
+        },
+        value);
+  }
+  return doc;
+}
+
 }  // namespace
 
 std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh& mesh, const MeshInfo& info,
@@ -224,30 +248,11 @@ std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh&
 }
 
 std::string run_report_json(const RunReport& report, int indent) {
-  const MeshOptions& o = report.options;
   const auto [timings, total] = timings_object(report.timings);
   json doc = {{"vorocrust_version", VOROCRUST_VERSION},
               {"command", report.command},
               {"inputs", report.inputs},
-              {"options",
-               {{"lipschitz", o.lipschitz},
-                {"smooth", o.smooth},
-                {"sharp_angle_degrees", o.sharp_angle()},
-                {"max_size", std::isfinite(o.max_size) ? json(o.max_size) : json(nullptr)},
-                {"smoothing_iterations", o.smoothing_rounds()},
-                {"smoothing_tolerance", o.smoothing_tolerance},
-                {"min_triangle_angle_degrees", o.min_triangle_angle()},
-                {"sizing_file", o.sizing_file.string()},
-                {"stop_after", o.stop_after == Stage::Balls     ? "balls"
-                               : o.stop_after == Stage::Surface ? "surface"
-                                                                : "cells"},
-                {"self_intersections", to_string(o.self_intersections)},
-                {"interior", to_string(o.interior)},
-                {"cvt_iterations", o.cvt_iterations},
-                {"max_aspect_ratio", o.max_aspect_ratio},
-                {"box", o.box ? json(*o.box) : json(nullptr)},
-                {"seed", o.seed},
-                {"threads", o.threads}}},
+              {"options", options_object(report.options)},
               {"status", report.status},
               {"message", report.message},
               {"timings", timings},

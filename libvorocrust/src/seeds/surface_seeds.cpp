@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-#include "refinement/point_cloud.hpp"
+#include "geometry/point_cloud.hpp"
 
 namespace vorocrust {
 

@@ -2,12 +2,12 @@
 // optimum violates holds the new optimum on its boundary plane, found by the same algorithm one
 // dimension down over the half-spaces before it, with the unknown of the largest coefficient
 // eliminated.
-#include "quality/small_lp.hpp"
+#include "geometry/small_lp.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace vorocrust::quality {
+namespace vorocrust::geometry {
 
 namespace {
 
@@ -113,4 +113,4 @@ std::optional<LpVector> maximise(int unknowns, const LpVector& objective, const 
   return Seidel(bound).solve(unknowns, objective, constraints.data(), constraints.size());
 }
 
-}  // namespace vorocrust::quality
+}  // namespace vorocrust::geometry

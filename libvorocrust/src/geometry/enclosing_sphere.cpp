@@ -6,10 +6,10 @@
 #include <array>
 #include <cmath>
 
-#include "quality/fixed_shuffle.hpp"
-#include "quality/spheres.hpp"
+#include "geometry/fixed_shuffle.hpp"
+#include "geometry/spheres.hpp"
 
-namespace vorocrust::quality {
+namespace vorocrust::geometry {
 
 namespace {
 
@@ -98,4 +98,4 @@ Sphere smallest_enclosing_sphere(std::vector<Point> points) {
   return {mean + extent * s.centre, extent * std::sqrt(farthest)};
 }
 
-}  // namespace vorocrust::quality
+}  // namespace vorocrust::geometry

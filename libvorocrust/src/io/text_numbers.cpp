@@ -1,4 +1,4 @@
-#include "export/text_numbers.hpp"
+#include "io/text_numbers.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -6,7 +6,7 @@
 
 #include "vorocrust/surface_mesh.hpp"
 
-namespace vorocrust::quality {
+namespace vorocrust::geometry {
 
 struct Sphere {
   Point centre = Point::Zero();
@@ -35,4 +35,4 @@ struct Plane {
 // Radius 0 when the planes leave no interior.
 Sphere largest_inscribed_ball(const std::vector<Plane>& planes, const Point& inside, double extent);
 
-}  // namespace vorocrust::quality
+}  // namespace vorocrust::geometry

@@ -9,7 +9,7 @@
 
 #include "core/split_mix.hpp"
 
-namespace vorocrust::quality {
+namespace vorocrust::geometry {
 
 template <class T>
 void fixed_shuffle(std::vector<T>& items, std::uint64_t seed = 0x5EED) {
@@ -17,4 +17,4 @@ void fixed_shuffle(std::vector<T>& items, std::uint64_t seed = 0x5EED) {
   for (std::size_t i = items.size(); i > 1; --i) std::swap(items[i - 1], items[next() % i]);
 }
 
-}  // namespace vorocrust::quality
+}  // namespace vorocrust::geometry

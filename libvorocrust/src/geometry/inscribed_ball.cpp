@@ -4,11 +4,11 @@
 #include <cmath>
 #include <limits>
 
-#include "quality/fixed_shuffle.hpp"
-#include "quality/small_lp.hpp"
-#include "quality/spheres.hpp"
+#include "geometry/fixed_shuffle.hpp"
+#include "geometry/small_lp.hpp"
+#include "geometry/spheres.hpp"
 
-namespace vorocrust::quality {
+namespace vorocrust::geometry {
 
 Sphere largest_inscribed_ball(const std::vector<Plane>& planes, const Point& inside, double extent) {
   // In the frame where `inside` is the origin and the extent 1; the box |x_i| <= 2 then bounds
@@ -35,4 +35,4 @@ Sphere largest_inscribed_ball(const std::vector<Plane>& planes, const Point& ins
   return {centre, std::max(radius, 0.0)};
 }
 
-}  // namespace vorocrust::quality
+}  // namespace vorocrust::geometry

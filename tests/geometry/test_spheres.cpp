@@ -7,11 +7,11 @@
 #include <cmath>
 #include <random>
 
-#include "quality/brute_force_spheres.hpp"
-#include "quality/small_lp.hpp"
-#include "quality/spheres.hpp"
+#include "geometry/brute_force_spheres.hpp"
+#include "geometry/small_lp.hpp"
+#include "geometry/spheres.hpp"
 
-namespace vorocrust::quality {
+namespace vorocrust::geometry {
 namespace {
 
 Point random_direction(std::mt19937_64& rng) {
@@ -152,4 +152,4 @@ TEST(SmallLp, BoxAndInfeasible) {
 }
 
 }  // namespace
-}  // namespace vorocrust::quality
+}  // namespace vorocrust::geometry

@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "quality/spheres.hpp"
+#include "geometry/spheres.hpp"
 
-namespace vorocrust::quality {
+namespace vorocrust::geometry {
 
 struct CellSpheres {
   Sphere outer;  // the smallest enclosing the cell
@@ -60,4 +60,4 @@ CellSpheres cell_spheres(std::vector<Point> points, std::size_t faces, Size&& si
   return spheres;
 }
 
-}  // namespace vorocrust::quality
+}  // namespace vorocrust::geometry

@@ -9,9 +9,9 @@
 #include <optional>
 #include <vector>
 
-#include "quality/spheres.hpp"
+#include "geometry/spheres.hpp"
 
-namespace vorocrust::quality {
+namespace vorocrust::geometry {
 
 // The sphere through `support` with its centre in their affine hull, if they are independent.
 inline std::optional<Sphere> sphere_through(const std::vector<Point>& support) {
@@ -76,4 +76,4 @@ inline double brute_force_inscribed_radius(const std::vector<Plane>& planes) {
   return best;
 }
 
-}  // namespace vorocrust::quality
+}  // namespace vorocrust::geometry

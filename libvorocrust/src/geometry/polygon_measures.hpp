@@ -12,7 +12,7 @@
 
 #include "vorocrust/cells.hpp"
 
-namespace vorocrust::cells {
+namespace vorocrust::geometry {
 
 // Area, unit normal (the right-hand side of the order) and centroid, from the triangles fanned
 // about the vertex mean: the same triangles whatever the point the polygon starts at.
@@ -71,4 +71,4 @@ double polygon_skewness(std::size_t n, PointAt&& at, const FaceGeometry& g, cons
   return off.norm() / reach;
 }
 
-}  // namespace vorocrust::cells
+}  // namespace vorocrust::geometry

@@ -1,7 +1,7 @@
 #include <ostream>
 #include <string>
 
-#include "export/text_numbers.hpp"
+#include "io/text_numbers.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/balls.hpp"
 

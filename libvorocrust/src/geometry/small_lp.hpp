@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-namespace vorocrust::quality {
+namespace vorocrust::geometry {
 
 inline constexpr int kMaxUnknowns = 4;
 using LpVector = std::array<double, kMaxUnknowns>;
@@ -27,4 +27,4 @@ struct HalfSpace {
 std::optional<LpVector> maximise(int unknowns, const LpVector& objective, const std::vector<HalfSpace>& constraints,
                                  double bound);
 
-}  // namespace vorocrust::quality
+}  // namespace vorocrust::geometry
