@@ -24,6 +24,7 @@ struct MeshArgs {
 };
 
 int run_info(const InfoArgs& args);
+int run_options(bool json);
 int run_mesh(const MeshArgs& args);
 
 }  // namespace vorocrust::cli

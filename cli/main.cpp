@@ -51,6 +51,12 @@ int main(int argc, char** argv) {
   mesh.options.add(*mesh_cmd);
   mesh_cmd->add_flag("-q,--quiet", mesh.quiet, "Print nothing but errors");
 
+  bool options_json_wanted = false;
+  CLI::App* options_cmd = app.add_subcommand(
+      "options", "List the options of `mesh` (the library's one table of them): name, default, range; with "
+                 "--json the whole table, as every front end is made from it");
+  options_cmd->add_flag("--json", options_json_wanted, "Print the table as one JSON list");
+
   CheckBallsArgs check;
   CLI::App* check_cmd =
       app.add_subcommand("check-balls", "Check a set of balls (balls.csv) against the ball conditions, independently");
@@ -126,6 +132,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*info_cmd) return run_info(info);
+    if (*options_cmd) return run_options(options_json_wanted);
     if (*check_cmd) return run_check_balls(check);
     if (*quality_cmd) return run_quality(quality);
     if (*cells_cmd) return run_cells(cells);

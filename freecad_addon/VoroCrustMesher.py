@@ -67,7 +67,7 @@ def property_value(o, value):
 
 def option_value(o, value):
     """The inverse of property_value: a widget's or property's value as mesh() takes it."""
-    if o["unset_number"] is not None and value == o["unset_number"]:
+    if value is None or (o["unset_number"] is not None and value == o["unset_number"]):
         return None
     if o["kind"] in ("box", "file"):
         text = str(value).strip()

@@ -49,7 +49,7 @@ OptionValue option_value(const OptionSpec& spec, const py::handle& value) {
       try {
         return value.cast<std::int64_t>();
       } catch (const py::cast_error&) {
-        throw Error(Error::Kind::Usage, std::string(spec.name) + " must lie " + range_text(spec) + ", got " +
+        throw Error(Error::Kind::Usage, std::string(spec.name) + " is out of its range (" + range_text(spec) + "), got " +
                                             py::str(value).cast<std::string>(),
                     {.option = std::string(spec.name)});
       }
@@ -96,50 +96,6 @@ py::object python_value(const OptionValue& value) {
         }
       },
       value);
-}
-
-py::object finite_or_none(double x) { return std::isfinite(x) ? py::object(py::float_(x)) : py::object(py::none()); }
-
-// The table as Python sees it: a dict per option.
-py::list option_table() {
-  py::list table;
-  for (const OptionSpec& spec : mesh_option_specs()) {
-    static const char* const kKinds[] = {"flag", "integer", "real", "choice", "choices", "file", "box"};
-    py::dict d;
-    d["name"] = std::string(spec.name);
-    d["kind"] = kKinds[static_cast<int>(spec.kind)];
-    d["label"] = std::string(spec.label);
-    d["help"] = spell_options(std::string(spec.help), Spelling::Python);
-    d["section"] = std::string(spec.section);
-    d["unit"] = std::string(spec.unit);
-    d["group"] = std::string(spec.group);
-    d["default"] = python_value(spec.default_value);
-    d["min"] = finite_or_none(spec.min);
-    d["max"] = finite_or_none(spec.max);
-    d["min_open"] = spec.min_open;
-    d["max_open"] = spec.max_open;
-    d["also"] = spec.also ? py::object(py::float_(*spec.also)) : py::object(py::none());
-    d["also_means"] = std::string(spec.also_means);
-    py::list choices;
-    for (std::string_view c : spec.choices) choices.append(std::string(c));
-    d["choices"] = py::tuple(choices);
-    d["unset_means"] = std::string(spec.unset_means);
-    d["plain_default"] = spec.plain_default ? py::object(py::float_(*spec.plain_default)) : py::object(py::none());
-    d["smooth_default"] = spec.smooth_default ? py::object(py::float_(*spec.smooth_default)) : py::object(py::none());
-    d["unset_number"] = spec.unset_number ? py::object(py::float_(*spec.unset_number)) : py::object(py::none());
-    py::list front_ends;
-    for (const auto& [bit, name] : {std::pair{kCli, "cli"}, {kPython, "python"}, {kMeshLab, "meshlab"}, {kFreeCad, "freecad"}}) {
-      if (spec.front_ends & bit) front_ends.append(name);
-    }
-    d["front_ends"] = py::tuple(front_ends);
-    d["cli"] = option_spelling(spec, Spelling::Cli);
-    d["meshlab"] = option_spelling(spec, Spelling::MeshLab);
-    d["freecad"] = option_spelling(spec, Spelling::FreeCad);
-    d["default_text"] = spell_options(default_text(spec), Spelling::Python);
-    d["range_text"] = range_text(spec);
-    table.append(d);
-  }
-  return table;
 }
 
 MeshRun run_mesh(const py::object& model, const py::dict& given, const py::object& output_dir, const py::object& progress) {
@@ -318,7 +274,8 @@ the same document as the CLI's OUTDIR/report.json; `summary` holds the lines the
                " cells>";
       });
 
-  m.attr("OPTIONS") = option_table();
+  // The table, as `vorocrust options --json` prints it; the boxes' defaults are tuples.
+  m.attr("OPTIONS") = parse_json(options_json(Spelling::Python));
   {
     py::list formats;
     for (const OutputFormatSpec& f : output_formats()) {

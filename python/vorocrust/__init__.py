@@ -69,9 +69,9 @@ _OPTION = {o["name"]: o for o in OPTIONS}
 #: or means "none", as OPTIONS[...]["default_text"] says).
 DEFAULT_OPTIONS = {o["name"]: o["default"] for o in OPTIONS if "python" in o["front_ends"]}
 #: What a run can stop after, in pipeline order.
-STAGES = _OPTION["stop_after"]["choices"]
+STAGES = tuple(_OPTION["stop_after"]["choices"])
 #: How the volume away from the surface is seeded (paper 2.5).
-INTERIOR_MODES = _OPTION["interior"]["choices"]
+INTERIOR_MODES = tuple(_OPTION["interior"]["choices"])
 
 #: What write_outputs() can write, with the files each one makes in the output folder.
 OUTPUT_FORMATS = {name: files for name, files, _, _, _ in _vorocrust._OUTPUT_TABLE}

@@ -134,10 +134,20 @@ class Usage(unittest.TestCase):
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--lipschitz", "1.5")
             self.assertEqual(r.returncode, 2)
             self.assertIn("--lipschitz must lie strictly between 0 and 1", r.stderr)
-            for bad in ("2", "-1", "inf"):
+            for bad, says in (("2", "must be at least 3, or 0 (no splits), got 2"),
+                              ("-1", "must be at least 3, or 0 (no splits), got -1"),
+                              ("inf", "must be a finite number, got inf")):
                 r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-aspect-ratio", bad)
                 self.assertEqual(r.returncode, 2, bad)
-                self.assertIn("--max-aspect-ratio must be 0 (no splits) or at least 3", r.stderr)
+                self.assertIn("--max-aspect-ratio " + says, r.stderr)
+            # A whole number out of its range, a negative one where no sign is meant included, is
+            # named, never wrapped around.
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--seed", "-5")
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("--seed must lie between 0 and 2147483647, got -5", r.stderr)
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--sharp-angle", "abc")
+            self.assertEqual(r.returncode, 2)
+            self.assertIn("--sharp-angle takes a number, got 'abc'", r.stderr)
 
 
 class Mesh(unittest.TestCase):

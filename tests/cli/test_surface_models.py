@@ -188,11 +188,11 @@ class SmoothingTolerance(unittest.TestCase):
 
     def test_the_tolerance_is_checked(self):
         with tempfile.TemporaryDirectory() as out:
-            for bad in ("-0.01", "inf"):
+            for bad, says in (("-0.01", "must be at least 0, got -0.01"), ("inf", "must be a finite number, got inf")):
                 r = run("mesh", os.path.join(MODELS, "directional_bimba.off"), "-o", out, "--smooth",
                         "--smoothing-tolerance", bad, "-q")
                 self.assertEqual(r.returncode, 2, r.stderr)
-                self.assertIn("--smoothing-tolerance must be 0 (none) or positive", r.stderr)
+                self.assertIn("--smoothing-tolerance " + says, r.stderr)
                 self.assertFalse(os.listdir(out))
 
 

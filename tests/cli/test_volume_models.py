@@ -135,7 +135,7 @@ class VolumeMeshOfEachModel(unittest.TestCase):
 class LargeModel(unittest.TestCase):
     def test_cgal_bones(self):
         with tempfile.TemporaryDirectory() as out:
-            report, _ = mesh_and_check(self, "cgal_bones.off", ["--format", "openfoam"], out, 3600)
+            report, _ = mesh_and_check(self, "cgal_bones.off", ["--format", "openfoam,seeds"], out, 3600)
             quality = report["cells"]["quality"]
             self.assertEqual(quality["skewness"]["highly_skew_faces"], 0)
             self.assertLess(quality["link_angle"]["max"], BONES_LINK_ANGLE_DEGREES)

@@ -96,19 +96,14 @@ def main():
           "largest aspect ratio %r" % panel.max_aspect_ratio.value())
     check(panel.parameters().max_aspect_ratio == 5, "the panel's parameters lose the largest aspect ratio")
 
-    # "Smooth surface" moves the sharp angle to the paper's for smooth models and back, and leaves
-    # an angle the user chose alone.
-    check(not panel.smooth.isChecked() and panel.sharp_angle.value() == 30, "smooth %r, angle %r" % (
-        panel.smooth.isChecked(), panel.sharp_angle.value()))
-    panel.smooth.setChecked(True)
-    check(panel.sharp_angle.value() == 60 and panel.parameters().smooth, "smooth: angle %r" % panel.sharp_angle.value())
-    panel.smooth.setChecked(False)
-    check(panel.sharp_angle.value() == 30, "not smooth: angle %r" % panel.sharp_angle.value())
+    # The sharp angle is left to the mode ("auto": 30, or 60 with "Smooth surface", as the library
+    # decides), unless the user chooses one.
+    check(not panel.smooth.isChecked() and panel.sharp_angle.value() == 0 and
+          panel.sharp_angle.specialValueText().startswith("auto") and panel.parameters().sharp_angle is None,
+          "smooth %r, angle %r" % (panel.smooth.isChecked(), panel.sharp_angle.value()))
     panel.sharp_angle.setValue(40)
-    panel.smooth.setChecked(True)
-    check(panel.sharp_angle.value() == 40, "the chosen angle changed to %r" % panel.sharp_angle.value())
-    panel.smooth.setChecked(False)
-    panel.sharp_angle.setValue(30)
+    check(panel.parameters().sharp_angle == 40, "the chosen angle: %r" % panel.parameters().sharp_angle)
+    panel.sharp_angle.setValue(0)
 
     # Cancel during a run: it stops, nothing is written, the panel stays open for another try.
     ok, cancel = task_buttons()

@@ -34,7 +34,8 @@ import subprocess
 import sys
 import unittest
 
-FAILED = 255  # meshlabserver's exit(-1), after a filter in its script fails
+from meshlab_runs import FAILED, make_prefix, option_rows, option_table, run_meshlabserver, script
+
 SEED = 11
 STRATUM_COLOURS = {"corner": (220, 40, 40), "crease": (235, 190, 40), "patch": (120, 150, 200)}
 
@@ -57,27 +58,6 @@ def parse_arguments():
 
 ARGS = parse_arguments()
 del sys.argv[1:]
-
-
-def make_prefix(work):
-    """The private prefix; returns its meshlabserver and its plugins folder."""
-    server = os.path.realpath(ARGS.meshlabserver)
-    root = os.path.dirname(os.path.dirname(server))  # /usr for /usr/bin/meshlabserver
-    lib_dir = os.path.realpath(ARGS.meshlab_lib_dir)
-    prefix = os.path.join(work, "prefix")
-    prefix_lib = os.path.join(prefix, os.path.relpath(lib_dir, root))  # PREFIX/lib/<triplet>/meshlab
-    os.makedirs(os.path.join(prefix, "bin"))
-    os.makedirs(os.path.join(prefix_lib, "plugins"))
-    copy = os.path.join(prefix, "bin", os.path.basename(server))
-    shutil.copy2(server, copy)
-    os.symlink(os.path.join(lib_dir, "libmeshlab-common.so"), os.path.join(prefix_lib, "libmeshlab-common.so"))
-    ours = os.path.basename(ARGS.plugin)
-    stock = os.path.join(lib_dir, "plugins")
-    for name in sorted(os.listdir(stock)):
-        if name.endswith(".so") and name != ours:  # an installed copy of ours must not shadow the one under test
-            os.symlink(os.path.join(stock, name), os.path.join(prefix_lib, "plugins", name))
-    os.symlink(os.path.realpath(ARGS.plugin), os.path.join(prefix_lib, "plugins", ours))
-    return copy, os.path.join(prefix_lib, "plugins")
 
 
 PLY_TYPES = {"char": "b", "uchar": "B", "short": "h", "ushort": "H", "int": "i", "uint": "I",
@@ -227,46 +207,27 @@ def off_from_obj(obj, off):
         f.writelines(f"{len(face)} " + " ".join(map(str, face)) + "\n" for face in faces)
 
 
-def script(path, filter_name, **parameters):
-    """A MeshLab filter script (.mlx) applying one filter. meshlabserver 2020.09 aborts on a
-    script that leaves out a parameter of the filter, so the callers give them all."""
-    rows = []
-    for name, value in parameters.items():
-        if isinstance(value, bool):
-            rows.append(f'  <Param type="RichBool" name="{name}" value="{str(value).lower()}"/>')
-        elif isinstance(value, int):
-            rows.append(f'  <Param type="RichInt" name="{name}" value="{value}"/>')
-        elif isinstance(value, float):
-            rows.append(f'  <Param type="RichFloat" name="{name}" value="{value!r}"/>')
-        elif isinstance(value, tuple):  # (kind, value): enum or absolute-or-percentage
-            kind, v = value
-            if kind == "enum":
-                rows.append(f'  <Param type="RichEnum" name="{name}" value="{v}" enum_cardinality="3"'
-                            ' enum_val0="random" enum_val1="lattice" enum_val2="cvt"/>')
-            else:
-                rows.append(f'  <Param type="RichAbsPerc" name="{name}" value="{v!r}" min="0" max="1"/>')
-        else:
-            rows.append(f'  <Param type="RichString" name="{name}" value="{value}"/>')
-    with open(path, "w") as f:
-        f.write("<!DOCTYPE FilterScript>\n<FilterScript>\n"
-                f' <filter name="{filter_name}">\n' + "\n".join(rows) + "\n </filter>\n</FilterScript>\n")
-    return path
+# The library's option table, as the filter's parameters are made from it.
+OPTIONS = option_table(ARGS.cli)
+# The Protecting Balls filter offers the options the balls depend on.
+BALL_OPTIONS = ("lipschitz", "smooth", "sharp_angle", "max_size", "sizing", "smoothing_iterations",
+                "smoothing_tolerance", "box", "self_intersections", "seed", "threads")
 
 
 def balls_script(path, seed=SEED, lipschitz=0.25, resolve=True, smooth=False):
-    return script(path, "VoroCrust Protecting Balls", lipschitz=lipschitz, smoothSurface=smooth,
-                  sharpAngle=60.0 if smooth else 30.0,
-                  maxSize=("abs", 0.0), seed=seed, resolveSelfIntersections=resolve)
+    values = dict(seed=seed, lipschitz=lipschitz, smooth=smooth, self_intersections="resolve" if resolve else "refuse")
+    return script(path, "VoroCrust Protecting Balls", option_rows(OPTIONS, BALL_OPTIONS, values))
 
 
 def voronoi_script(path, folder, vtu, openfoam, seed=SEED, cvt_iterations=20, all_visible=False, resolve=True,
                    max_aspect_ratio=5.0):
-    return script(path, "VoroCrust Voronoi Mesh", lipschitz=0.25, smoothSurface=False, sharpAngle=30.0,
-                  maxSize=("abs", 0.0), seed=seed,
-                  resolveSelfIntersections=resolve, interior=("enum", 0), cvtIterations=cvt_iterations,
-                  maxAspectRatio=max_aspect_ratio, outputFolder=folder, writeVtu=vtu,
-                  writeOpenFoam=openfoam, writeTough=openfoam, writePflotran=openfoam, writeSeeds=True,
-                  writeSurface=True, allVisibleLayers=all_visible)
+    formats = ["seeds", "obj", "ply"] + (["vtu"] if vtu else []) + (["openfoam", "tough", "pflotran"] if openfoam else [])
+    values = dict(seed=seed, cvt_iterations=cvt_iterations, max_aspect_ratio=max_aspect_ratio, formats=formats,
+                  self_intersections="resolve" if resolve else "refuse")
+    rows = option_rows(OPTIONS, [o["name"] for o in OPTIONS], values)
+    rows.append(f'  <Param type="RichString" name="outputFolder" value="{folder}"/>')
+    rows.append(f'  <Param type="RichBool" name="allVisibleLayers" value="{str(all_visible).lower()}"/>')
+    return script(path, "VoroCrust Voronoi Mesh", rows)
 
 
 class MeshLabCase(unittest.TestCase):
@@ -274,20 +235,11 @@ class MeshLabCase(unittest.TestCase):
         self.work = os.path.abspath(ARGS.work)
         shutil.rmtree(self.work, ignore_errors=True)
         os.makedirs(os.path.join(self.work, "home"))
-        self.server, self.plugins = make_prefix(self.work)
+        self.server, self.plugins = make_prefix(self.work, ARGS.meshlabserver, ARGS.meshlab_lib_dir, ARGS.plugin)
 
     def meshlabserver(self, *arguments):
         """Runs meshlabserver under xvfb-run; returns (exit status, everything it printed)."""
-        env = dict(os.environ, HOME=os.path.join(self.work, "home"))  # no settings of the user's
-        for attempt in range(3):
-            r = subprocess.run(["xvfb-run", "-a", self.server, *arguments], stdout=subprocess.PIPE,
-                               stderr=subprocess.STDOUT, text=True, errors="replace", env=env,
-                               cwd=self.work, timeout=1800)
-            # Two servers may race for a display; and xvfb-run may fail to remove its own temporary
-            # folder, when its exit status (5) replaces meshlabserver's: either way, run it again.
-            if not any(trouble in r.stdout for trouble in (
-                    "Xvfb failed to start", "xvfb-run: error: problem while cleaning up temporary directory")):
-                break
+        r = run_meshlabserver(self.server, self.work, *arguments)
         # xvfb-run reports a command killed by signal N as 128+N; the shell's own codes lie between.
         self.assertFalse(r.returncode < 0 or 128 < r.returncode < FAILED,
                          f"meshlabserver crashed (status {r.returncode}):\n{r.stdout[-3000:]}")
@@ -378,7 +330,7 @@ class MeshLabCase(unittest.TestCase):
                                             "-o", seeds_out, "-l", "2", "-m", "vc", "vq", "-s", mlx)
         self.assertEqual(status, 0, output[-3000:])
         self.assertIn("up to the surface (no volume file asked for)", output)
-        self.assertIn(f"{len(cli_seeds)} seeds; a surface of {len(cli_faces)} triangles", output)
+        self.assertIn(f"VoroCrust: {len(cli_seeds)} surface seeds, a surface of {len(cli_faces)} triangles", output)
         stem = os.path.splitext(os.path.basename(model))[0]
         self.assertIn(f'VoroCrust: layers "{stem} VoroCrust surface" and "{stem} VoroCrust seeds"', output)
 
@@ -420,8 +372,8 @@ class MeshLabCase(unittest.TestCase):
         self.assertEqual(len(set(colour_of_label.values())), len(colour_of_label))
 
         # The files: equal input and seed, equal files, byte for byte; no volume file.
-        self.assertEqual(sorted(os.listdir(folder)), ["seeds.csv", "surface.obj", "surface.ply"])
-        for name in sorted(os.listdir(folder)):
+        self.assertEqual(sorted(os.listdir(folder)), ["report.json", "seeds.csv", "surface.obj", "surface.ply"])
+        for name in ["seeds.csv", "surface.obj", "surface.ply"]:
             with open(os.path.join(folder, name), "rb") as a, open(os.path.join(cli_out, name), "rb") as b:
                 self.assertTrue(a.read() == b.read(), f"{name} differs from the vorocrust program's")
         print(f"{ARGS.model}: a surface of {len(faces)} triangles (components and Euler characteristics "
@@ -526,7 +478,7 @@ class MeshLabCase(unittest.TestCase):
         cube = os.path.join(data, "invalid/cube.off")
         with self.subTest(input="a Lipschitz constant out of range"):
             self.assert_fails_with(cube, balls_script(os.path.join(self.work, "bad_l.mlx"), lipschitz=1.5),
-                                   "VoroCrust: usage error:", "lipschitz must lie strictly between 0 and 1")
+                                   "VoroCrust: usage error:", '"Lipschitz constant L" must lie strictly between 0 and 1')
         # The Voronoi Mesh filter: the same validation, its own parameters and its output folder.
         folder = os.path.join(self.work, "voronoi")
         with self.subTest(input="the Voronoi Mesh filter on a pierced cube, its self-intersections refused"):
@@ -536,17 +488,18 @@ class MeshLabCase(unittest.TestCase):
         with self.subTest(input="negative CVT iterations"):
             self.assert_fails_with(cube, voronoi_script(os.path.join(self.work, "v_cvt.mlx"), folder, False, False,
                                                         cvt_iterations=-1),
-                                   "VoroCrust: usage error:", "cvt-iterations must be 0 or positive")
+                                   "VoroCrust: usage error:", '"CVT iterations" must lie between 0 and 10000, got -1')
         with self.subTest(input="a largest aspect ratio below 3"):
             self.assert_fails_with(cube, voronoi_script(os.path.join(self.work, "v_ar.mlx"), folder, False, False,
                                                         max_aspect_ratio=2.0),
-                                   "VoroCrust: usage error:", "max-aspect-ratio must be 0 (no splits) or at least 3")
+                                   "VoroCrust: usage error:",
+                                   '"Largest cell aspect ratio" must be at least 3, or 0 (no splits), got 2')
         with self.subTest(input="an output folder that cannot be made"):
             blocker = os.path.join(self.work, "a_file")
             open(blocker, "w").close()
             self.assert_fails_with(cube, voronoi_script(os.path.join(self.work, "v_out.mlx"),
                                                         os.path.join(blocker, "out"), False, False),
-                                   "VoroCrust: output error:", "cannot make the output folder")
+                                   "VoroCrust: output error:", "cannot create the output folder")
         self.assertFalse(os.path.exists(folder))  # refused before anything was made
 
 

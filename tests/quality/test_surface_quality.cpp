@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "quality/triangle_shape.hpp"
+#include "geometry/triangle_shape.hpp"
 #include "surface_builder.hpp"
 #include "test_support.hpp"
 #include "vorocrust/error.hpp"
@@ -101,7 +101,7 @@ TEST(SurfaceQuality, DegenerateTrianglesGiveZeroQualityAndNoNaN) {
   EXPECT_EQ(q.min_angle_degrees, 0.0);
   EXPECT_NEAR(q.max_angle_degrees, 180.0, 1e-12);  // the flat triangle's middle corner
   EXPECT_EQ(q.hausdorff, 0.0);
-  const TriangleShape point = triangle_shape(Point(1, 1, 1), Point(1, 1, 1), Point(1, 1, 1));
+  const geometry::TriangleShape point = geometry::triangle_shape(Point(1, 1, 1), Point(1, 1, 1), Point(1, 1, 1));
   EXPECT_EQ(point.quality, 0.0);
   for (double a : point.angles_degrees) EXPECT_EQ(a, 0.0);
 }

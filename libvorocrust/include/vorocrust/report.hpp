@@ -95,6 +95,14 @@ struct VOROCRUST_API CellsReport {
 // surface figures stay, so `vorocrust quality OUTDIR` still finds the model.
 VOROCRUST_API std::string cells_report_json(const CellsReport& report, int indent = 2);
 
+// The option table (options.hpp) as one JSON list, an object per option: name, kind, label, help,
+// section, unit, group, default (null: unset), min, max (null: unbounded), min_open, max_open,
+// also, also_means, choices, unset_means, plain_default, smooth_default, unset_number,
+// front_ends, the spellings of each front end (python, cli, meshlab, freecad, label), and
+// default_text and range_text. Texts that name other options name them as `spelling` spells
+// them. What `vorocrust options --json` prints and the Python module's OPTIONS hold.
+VOROCRUST_API std::string options_json(Spelling spelling, int indent = 2);
+
 // What a run says about itself, a line each, as every front end shows it (run_job's summary):
 // the balls and features, the surface and its figures, the cells and theirs, as far as the run
 // went.

@@ -117,7 +117,7 @@ std::vector<Seed> aspect_split_seeds(const std::vector<cells::LongCell>& long_ce
   const SeedCloud cloud{&seeds};
   const StaticKdTree<SeedCloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   std::vector<std::uint32_t> near;
-  BallTree splits;  // those placed here, each with kSplitApart of its reach
+  geometry::BallTree splits;  // those placed here, each with kSplitApart of its reach
   const auto apart = [&](const Point& p, double reach) {
     const double gap = kSplitApart * reach;
     points_within(tree, p, gap * gap, near);

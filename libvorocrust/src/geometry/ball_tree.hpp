@@ -13,7 +13,7 @@
 
 #include "vorocrust/surface_mesh.hpp"
 
-namespace vorocrust {
+namespace vorocrust::geometry {
 
 // A k-d tree of balls that grows one ball at a time: a new ball descends to its leaf, and a full
 // leaf splits between the middle centres along their widest spread. Darts land uniformly at
@@ -175,4 +175,4 @@ inline void BallTree::split(std::uint32_t index) {
   node.child = child;
 }
 
-}  // namespace vorocrust
+}  // namespace vorocrust::geometry

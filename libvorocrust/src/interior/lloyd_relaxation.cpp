@@ -15,7 +15,7 @@ namespace vorocrust {
 
 double lloyd_relaxation(std::vector<Seed>& seeds, const BallIndex& protecting_balls, int iterations, int threads,
                         const ProgressCallback& progress) {
-  BallTree surface_balls;
+  geometry::BallTree surface_balls;
   for (std::uint32_t i = 0; i < seeds.size(); ++i) {
     if (seeds[i].kind == SeedKind::Surface || seeds[i].kind == SeedKind::Cap) {
       surface_balls.insert(seeds[i].position, seeds[i].radius, i);

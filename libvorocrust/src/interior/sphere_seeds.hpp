@@ -129,8 +129,8 @@ class SphereSeeds {
     bool near = false;
     placed_.search(
         p, [&](double d2, double max_radius, std::uint32_t) { return !near && d2 < spacing * spacing * max_radius * max_radius; },
-        [&](const BallTree::Sphere& s) {
-          // Rounded as the pruning above rounds: an unbounded own radius is BallTree::contains.
+        [&](const geometry::BallTree::Sphere& s) {
+          // Rounded as the pruning above rounds: an unbounded own radius is geometry::BallTree::contains.
           const double r = std::min(s.radius, own);
           near = near || (s.centre - p).squaredNorm() < spacing * spacing * r * r;
         });
@@ -225,7 +225,7 @@ class SphereSeeds {
 
   const BallIndex& balls_;
   const RegionLocator& regions_;
-  BallTree placed_;
+  geometry::BallTree placed_;
   std::uint32_t count_ = 0;
   std::vector<std::uint32_t> near_;
 };

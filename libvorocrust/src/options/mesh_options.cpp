@@ -311,7 +311,7 @@ const std::array<OptionSpec, 17> kSpecs = {{
 }
 
 std::string number_text(double x) {
-  if (std::isinf(x)) return x > 0 ? "infinity" : "-infinity";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
   char text[32];
   std::snprintf(text, sizeof text, "%.10g", x);
   return text;
@@ -358,6 +358,13 @@ std::string choices_text(const OptionSpec& spec) {
     text += spec.choices[k];
   }
   return text;
+}
+
+// "must lie between 0 and 1", "must be at least 3, or 0 (no splits)": what a value out of range
+// is told.
+std::string must(const OptionSpec& spec) {
+  const std::string range = range_text(spec);
+  return (range.find("between") != std::string::npos ? "must lie " : "must be ") + range;
 }
 
 bool is_choice(const OptionSpec& spec, std::string_view name) {
@@ -448,7 +455,7 @@ OptionValue parse_option_value(const OptionSpec& spec, std::string_view text) {
       std::int64_t n = 0;
       const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
       if (ec == std::errc() && end == text.data() + text.size() && !text.empty()) return n;
-      if (ec == std::errc::result_out_of_range) refuse(spec, "must lie " + range_text(spec) + ", got " + std::string(text));
+      if (ec == std::errc::result_out_of_range) refuse(spec, must(spec) + ", got " + std::string(text));
       refuse(spec, "takes a whole number, got '" + std::string(text) + "'");
     }
     case OptionKind::Real:
@@ -525,14 +532,15 @@ void check_option_value(const OptionSpec& spec, const OptionValue& value) {
       if (!std::holds_alternative<std::int64_t>(value)) wrong_kind("a whole number");
       const std::int64_t n = std::get<std::int64_t>(value);
       if (!in_range(spec, static_cast<double>(n))) {
-        refuse(spec, "must lie " + range_text(spec) + ", got " + std::to_string(n));
+        refuse(spec, must(spec) + ", got " + std::to_string(n));
       }
       return;
     }
     case OptionKind::Real: {
       if (!std::holds_alternative<double>(value)) wrong_kind("a number");
       const double x = std::get<double>(value);
-      if (!in_range(spec, x)) refuse(spec, "must lie " + range_text(spec) + ", got " + number_text(x));
+      if (std::isinf(x) && !in_range(spec, x)) refuse(spec, "must be a finite number, got " + number_text(x));
+      if (!in_range(spec, x)) refuse(spec, must(spec) + ", got " + number_text(x));
       return;
     }
     case OptionKind::Choice:

@@ -12,7 +12,7 @@
 #include "geometry/curve_order.hpp"
 #include "geometry/surface_sampling.hpp"
 
-namespace vorocrust {
+namespace vorocrust::quality {
 
 namespace {
 
@@ -85,4 +85,4 @@ double farthest_sample_distance(const std::vector<Point>& samples, const Surface
   return std::sqrt(farthest_squared.load());
 }
 
-}  // namespace vorocrust
+}  // namespace vorocrust::quality

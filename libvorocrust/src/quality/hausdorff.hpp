@@ -9,7 +9,7 @@
 #include "geometry/box_tree.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
-namespace vorocrust {
+namespace vorocrust::quality {
 
 // Every vertex a face uses, every edge midpoint, and `random_points` points uniform over the
 // surface's area, drawn from `seed`, all ordered along a space-filling curve. Zero-area surfaces
@@ -23,4 +23,4 @@ std::vector<Point> surface_samples(const SurfaceMesh& mesh, const EdgeTopology& 
 double farthest_sample_distance(const std::vector<Point>& samples, const SurfaceMesh& to, const geometry::BoxTree& faces,
                                 double negligible);
 
-}  // namespace vorocrust
+}  // namespace vorocrust::quality

@@ -11,7 +11,7 @@
 #include "geometry/box_tree.hpp"
 #include "quality/hausdorff.hpp"
 #include "quality/surface_topology.hpp"
-#include "quality/triangle_shape.hpp"
+#include "geometry/triangle_shape.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/quality.hpp"
 #include "vorocrust/regions.hpp"
@@ -38,7 +38,7 @@ void measure_shapes(const SurfaceMesh& output, std::size_t bins, SurfaceQuality&
   std::size_t below_30 = 0, above_90 = 0;
   double quality_sum = 0;
   for (const Triangle& t : output.triangles) {
-    const TriangleShape shape = triangle_shape(output.vertices[t[0]], output.vertices[t[1]], output.vertices[t[2]]);
+    const geometry::TriangleShape shape = geometry::triangle_shape(output.vertices[t[0]], output.vertices[t[1]], output.vertices[t[2]]);
     for (int k = 0; k < 3; ++k) {
       q.min_angle_degrees = std::min(q.min_angle_degrees, shape.angles_degrees[k]);
       q.max_angle_degrees = std::max(q.max_angle_degrees, shape.angles_degrees[k]);
@@ -64,7 +64,7 @@ struct Side {
 
 Side prepare(const SurfaceMesh& mesh, std::size_t random_samples, std::uint64_t seed) {
   const EdgeTopology edges = build_edge_topology(mesh);
-  return {surface_topology(mesh, edges), surface_samples(mesh, edges, random_samples, seed), geometry::face_tree(mesh)};
+  return {surface_topology(mesh, edges), quality::surface_samples(mesh, edges, random_samples, seed), geometry::face_tree(mesh)};
 }
 
 // The regions of space the surface cuts out but the outside, in label order; nullopt where labels
@@ -110,7 +110,7 @@ std::vector<double> triangle_qualities(const SurfaceMesh& mesh) {
   std::vector<double> quality;
   quality.reserve(mesh.num_faces());
   for (const Triangle& t : mesh.triangles) {
-    quality.push_back(triangle_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]).quality);
+    quality.push_back(geometry::triangle_shape(mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]).quality);
   }
   return quality;
 }
@@ -145,8 +145,8 @@ SurfaceQuality measure_surface_quality(const SurfaceMesh& input, const SurfaceMe
   q.input_samples = in.samples.size();
   q.output_samples = out.samples.size();
   const double negligible = kNegligibleRelativeDistance * q.bounding_box_diagonal;
-  q.input_to_output = farthest_sample_distance(in.samples, output, *out.faces, negligible);
-  q.output_to_input = farthest_sample_distance(out.samples, input, *in.faces, negligible);
+  q.input_to_output = quality::farthest_sample_distance(in.samples, output, *out.faces, negligible);
+  q.output_to_input = quality::farthest_sample_distance(out.samples, input, *in.faces, negligible);
   q.hausdorff = std::max(q.input_to_output, q.output_to_input);
   q.hausdorff_relative = q.hausdorff / q.bounding_box_diagonal;
   return q;

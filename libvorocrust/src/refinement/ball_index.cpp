@@ -7,7 +7,7 @@
 
 namespace vorocrust {
 
-BallIndex::BallIndex() : trees_(std::make_unique<BallTree[]>(3)) {}
+BallIndex::BallIndex() : trees_(std::make_unique<geometry::BallTree[]>(3)) {}
 BallIndex::~BallIndex() = default;
 
 std::uint32_t BallIndex::add(const SurfaceSite& site, double radius) {
@@ -31,7 +31,7 @@ void BallIndex::centres_within(StratumType type, const Point& p, double distance
   const double limit = distance * distance;
   trees_[static_cast<int>(type)].search(
       p, [&](double d2, double, std::uint32_t) { return d2 < limit; },
-      [&](const BallTree::Sphere& s) {
+      [&](const geometry::BallTree::Sphere& s) {
         if ((s.centre - p).squaredNorm() < limit) out.push_back(s.ball);
       });
 }
@@ -43,7 +43,7 @@ void BallIndex::reaching(StratumType type, const Point& p, double margin, std::v
       [&](double d2, double max_radius, std::uint32_t newest) {
         return newest >= first && d2 < (max_radius + margin) * (max_radius + margin);
       },
-      [&](const BallTree::Sphere& s) {
+      [&](const geometry::BallTree::Sphere& s) {
         if (s.ball >= first && (s.centre - p).squaredNorm() < (s.radius + margin) * (s.radius + margin)) out.push_back(s.ball);
       });
 }
@@ -55,7 +55,7 @@ void BallIndex::reaching_scaled(StratumType type, const Point& p, double scale, 
       [&](double d2, double max_radius, std::uint32_t) {
         return d2 < (scale * max_radius + margin) * (scale * max_radius + margin);
       },
-      [&](const BallTree::Sphere& s) {
+      [&](const geometry::BallTree::Sphere& s) {
         if ((s.centre - p).squaredNorm() < (scale * s.radius + margin) * (scale * s.radius + margin)) out.push_back(s.ball);
       });
 }
@@ -75,7 +75,7 @@ void BallIndex::lipschitz_violators(StratumType type, const Point& p, double rad
       [&](double d2, double max_radius, std::uint32_t) {
         return max_radius > radius && L * L * d2 < (max_radius - radius) * (max_radius - radius);
       },
-      [&](const BallTree::Sphere& s) {
+      [&](const geometry::BallTree::Sphere& s) {
         if (s.radius > radius + L * (s.centre - p).norm()) out.push_back(s.ball);
       });
 }

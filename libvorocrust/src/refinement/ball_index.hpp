@@ -47,7 +47,7 @@ class BallIndex {
 
  private:
   std::vector<RefinedBall> balls_;
-  std::unique_ptr<BallTree[]> trees_;  // one per stratum type
+  std::unique_ptr<geometry::BallTree[]> trees_;  // one per stratum type
 };
 
 }  // namespace vorocrust

@@ -189,7 +189,7 @@ class BallRefinement::Impl {
   void shrink_neighbours_for_lipschitz(std::uint32_t ball);
   // Balls of every type that reach piece i of the pool; `fresh` holds the balls that came since
   // the pool was made (none for a pool just made, whose pieces ask the index of all balls).
-  void reaching(const Pool& pool, std::size_t i, const BallTree& fresh, std::vector<std::uint32_t>& out) const;
+  void reaching(const Pool& pool, std::size_t i, const geometry::BallTree& fresh, std::vector<std::uint32_t>& out) const;
   void classify(StratumType type, const Subface& s, const std::vector<std::uint32_t>& reaching,
                 std::vector<Candidate>& out) const;
   bool covers(const Subface& s, const std::vector<Candidate>& candidates, std::vector<CoverBall>& cover) const;
@@ -370,7 +370,7 @@ SurfaceSite BallRefinement::Impl::site_on(const Subface& s, const Point& p) cons
   return s.is_segment() ? crease_site(strata_, s.element, p) : patch_site(strata_, s.element, p);
 }
 
-void BallRefinement::Impl::reaching(const Pool& pool, std::size_t i, const BallTree& fresh,
+void BallRefinement::Impl::reaching(const Pool& pool, std::size_t i, const geometry::BallTree& fresh,
                                     std::vector<std::uint32_t>& out) const {
   out.clear();
   const Subface& s = pool.pieces[i];
@@ -387,7 +387,7 @@ void BallRefinement::Impl::reaching(const Pool& pool, std::size_t i, const BallT
   }
   fresh.search(
       centroid, [&](double d2, double max_radius, std::uint32_t) { return d2 < (max_radius + reach) * (max_radius + reach); },
-      [&](const BallTree::Sphere& s) {
+      [&](const geometry::BallTree::Sphere& s) {
         if ((s.centre - centroid).squaredNorm() < (s.radius + reach) * (s.radius + reach)) out.push_back(s.ball);
       });
 }
@@ -535,7 +535,7 @@ Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool la
   // the old balls' radii bound every subtree, and a query visits far more of it. A pool just made
   // knows no ball yet: its pieces ask the index of all balls, which costs a pass that samples a
   // few pieces far less than a tree of every ball would (a quarter million on cgal_bones).
-  BallTree fresh;
+  geometry::BallTree fresh;
   if (pool.known > 0) {
     for (std::uint32_t b = pool.known; b < balls_.size(); ++b) fresh.insert(balls_[b].site.position, balls_[b].radius, b);
   }

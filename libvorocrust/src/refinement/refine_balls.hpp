@@ -16,7 +16,7 @@
 #include "refinement/boundary_samples.hpp"
 #include "refinement/sizing_field.hpp"
 #include "vorocrust/balls.hpp"
-#include "vorocrust/mesher.hpp"
+#include "vorocrust/stats.hpp"
 #include "vorocrust/progress.hpp"
 
 namespace vorocrust {

@@ -234,6 +234,56 @@ json options_object(const MeshOptions& options) {
 
 }  // namespace
 
+std::string options_json(Spelling spelling, int indent) {
+  static const char* const kKinds[] = {"flag", "integer", "real", "choice", "choices", "file", "box"};
+  const auto number_or_null = [](const std::optional<double>& x) { return x && std::isfinite(*x) ? json(*x) : json(nullptr); };
+  json list = json::array();
+  for (const OptionSpec& spec : mesh_option_specs()) {
+    json front_ends = json::array();
+    for (const auto& [bit, name] : {std::pair{kCli, "cli"}, {kPython, "python"}, {kMeshLab, "meshlab"}, {kFreeCad, "freecad"}}) {
+      if (spec.front_ends & bit) front_ends.push_back(name);
+    }
+    json choices = json::array();
+    for (std::string_view c : spec.choices) choices.push_back(c);
+    json value = std::visit(
+        [](const auto& v) -> json {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>) {
+            return nullptr;
+          } else {
+            return v;
+          }
+        },
+        spec.default_value);
+    list.push_back({{"name", spec.name},
+                    {"kind", kKinds[static_cast<int>(spec.kind)]},
+                    {"label", spec.label},
+                    {"help", spell_options(std::string(spec.help), spelling)},
+                    {"section", spec.section},
+                    {"unit", spec.unit},
+                    {"group", spec.group},
+                    {"default", value},
+                    {"min", number_or_null(spec.min)},
+                    {"max", number_or_null(spec.max)},
+                    {"min_open", spec.min_open},
+                    {"max_open", spec.max_open},
+                    {"also", number_or_null(spec.also)},
+                    {"also_means", spec.also_means},
+                    {"choices", choices},
+                    {"unset_means", spec.unset_means},
+                    {"plain_default", number_or_null(spec.plain_default)},
+                    {"smooth_default", number_or_null(spec.smooth_default)},
+                    {"unset_number", number_or_null(spec.unset_number)},
+                    {"front_ends", front_ends},
+                    {"python", option_spelling(spec, Spelling::Python)},
+                    {"cli", option_spelling(spec, Spelling::Cli)},
+                    {"meshlab", option_spelling(spec, Spelling::MeshLab)},
+                    {"freecad", option_spelling(spec, Spelling::FreeCad)},
+                    {"default_text", spell_options(default_text(spec), spelling)},
+                    {"range_text", range_text(spec)}});
+  }
+  return list.dump(indent);
+}
+
 std::string info_json(const std::vector<std::string>& inputs, const SurfaceMesh& mesh, const MeshInfo& info,
                       const ValidationReport& validation, int indent) {
   json doc = info_object(inputs, mesh, info, validation);

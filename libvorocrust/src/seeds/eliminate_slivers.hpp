@@ -8,7 +8,7 @@
 #include "refinement/refine_balls.hpp"
 #include "seeds/ball_shrinks.hpp"
 #include "seeds/seed_pairs.hpp"
-#include "vorocrust/mesher.hpp"
+#include "vorocrust/stats.hpp"
 
 namespace vorocrust {
 

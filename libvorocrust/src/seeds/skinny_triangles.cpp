@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "quality/triangle_shape.hpp"
+#include "geometry/triangle_shape.hpp"
 
 namespace vorocrust {
 
@@ -26,7 +26,7 @@ SkinnyTriangleShrinks choose_skinny_triangle_shrinks(const BallIndex& balls, con
   for (const SeedPair& pair : pairs) {
     const RefinedBall &a = balls[pair.balls[0]], &b = balls[pair.balls[1]], &c = balls[pair.balls[2]];
     if (a.site.type != StratumType::Patch || b.site.type != StratumType::Patch || c.site.type != StratumType::Patch) continue;
-    const TriangleShape shape = triangle_shape(a.site.position, b.site.position, c.site.position);
+    const geometry::TriangleShape shape = geometry::triangle_shape(a.site.position, b.site.position, c.site.position);
     if (!(*std::min_element(shape.angles_degrees.begin(), shape.angles_degrees.end()) < min_angle_degrees)) continue;
     ++out.skinny;
     if (!(shape.quality > 0)) continue;  // no circumcentre; overlapping balls never make one

@@ -1,5 +1,5 @@
-#include "cells/voronoi_cells.hpp"
-
+// The cells of seeds cut one at a time, each from a cube about its seed by its nearest seeds in
+// order (compute_voronoi_cells, recompute_voronoi_cells), and the checks on cells so cut.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -9,9 +9,10 @@
 #include <numeric>
 #include <optional>
 #include <string>
-#include <tuple>
 #include <voro++.hh>
 
+#include "cells/raw_cell_extract.hpp"
+#include "cells/voronoi_cells.hpp"
 #include "geometry/curve_order.hpp"
 #include "geometry/point_cloud.hpp"
 #include "vorocrust/error.hpp"
@@ -19,242 +20,11 @@
 namespace vorocrust::cells {
 namespace {
 
-struct Scratch {
-  std::vector<double> xyz;
-  std::vector<int> faces, ids;
-  std::vector<std::uint32_t> near;
-  std::vector<double> distance2;
-  std::vector<std::uint32_t> order, rank, faces_order;
-};
-
-// Voro++ numbers a cell's vertices and faces in the order its cuts met them, and a cut that
-// changes nothing can still move where the next one starts. Numbered by position (vertices
-// lexicographically, faces by the seed across them, each cycle from its lowest vertex), a cell is
-// the same whichever seeds were cut in vain, so cells cut again after seeds were added match
-// cells cut among all of them.
-void canonicalize(RawCell& cell, Scratch& scratch) {
-  const std::size_t n = cell.vertices.size();
-  std::vector<std::uint32_t>& order = scratch.order;
-  order.resize(n);
-  std::iota(order.begin(), order.end(), 0u);
-  const auto less = [&](std::uint32_t a, std::uint32_t b) {
-    const Point &p = cell.vertices[a], &q = cell.vertices[b];
-    return std::tie(p.x(), p.y(), p.z(), a) < std::tie(q.x(), q.y(), q.z(), b);
-  };
-  std::sort(order.begin(), order.end(), less);
-  std::vector<std::uint32_t>& rank = scratch.rank;
-  rank.resize(n);
-  for (std::uint32_t k = 0; k < n; ++k) rank[order[k]] = k;
-  std::vector<Point> vertices(n);
-  for (std::uint32_t k = 0; k < n; ++k) vertices[k] = cell.vertices[order[k]];
-  cell.vertices.swap(vertices);
-
-  const std::size_t faces = cell.neighbours.size();
-  std::vector<std::uint32_t>& by_neighbour = scratch.faces_order;
-  by_neighbour.resize(faces);
-  std::iota(by_neighbour.begin(), by_neighbour.end(), 0u);
-  std::sort(by_neighbour.begin(), by_neighbour.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return std::tie(cell.neighbours[a], a) < std::tie(cell.neighbours[b], b);
-  });
-  std::vector<std::int32_t> neighbours(faces);
-  std::vector<std::uint32_t> starts, cycles;
-  starts.reserve(faces + 1);
-  cycles.reserve(cell.cycles.size());
-  for (std::size_t k = 0; k < faces; ++k) {
-    const std::uint32_t f = by_neighbour[k];
-    neighbours[k] = cell.neighbours[f];
-    starts.push_back(static_cast<std::uint32_t>(cycles.size()));
-    const std::uint32_t begin = cell.starts[f], size = cell.starts[f + 1] - begin;
-    std::uint32_t first = 0;
-    for (std::uint32_t j = 1; j < size; ++j) {
-      if (rank[cell.cycles[begin + j]] < rank[cell.cycles[begin + first]]) first = j;
-    }
-    for (std::uint32_t j = 0; j < size; ++j) cycles.push_back(rank[cell.cycles[begin + (first + j) % size]]);
-  }
-  starts.push_back(static_cast<std::uint32_t>(cycles.size()));
-  cell.neighbours.swap(neighbours);
-  cell.starts.swap(starts);
-  cell.cycles.swap(cycles);
-}
-
-// A Voro++ cell of the seed at p, computed `scale` times as small, as a RawCell.
-void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cell, Scratch& scratch, double scale = 1) {
-  voro_cell.vertices(0, 0, 0, scratch.xyz);
-  for (std::size_t k = 0; k < scratch.xyz.size(); ++k) scratch.xyz[k] = p[static_cast<Eigen::Index>(k % 3)] + scale * scratch.xyz[k];
-  voro_cell.face_vertices(scratch.faces);
-  voro_cell.neighbors(scratch.ids);
-  const std::vector<double>& xyz = scratch.xyz;
-  const std::vector<int>& faces = scratch.faces;
-  cell.vertices.resize(xyz.size() / 3);
-  for (std::size_t v = 0; v < cell.vertices.size(); ++v) cell.vertices[v] = {xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]};
-  cell.neighbours.assign(scratch.ids.begin(), scratch.ids.end());
-  cell.starts.clear();
-  cell.cycles.clear();
-  // Voro++ lists each face clockwise seen from outside: reverse it.
-  for (std::size_t at = 0; at < faces.size(); at += static_cast<std::size_t>(faces[at]) + 1) {
-    cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
-    for (int k = faces[at]; k >= 1; --k) cell.cycles.push_back(static_cast<std::uint32_t>(faces[at + static_cast<std::size_t>(k)]));
-  }
-  cell.starts.push_back(static_cast<std::uint32_t>(cell.cycles.size()));
-  canonicalize(cell, scratch);
-  // Each edge is seen from both its faces; from the one where it runs from its lower vertex.
-  cell.shortest_edge2 = std::numeric_limits<double>::infinity();
-  for (std::size_t f = 0; f < cell.num_faces(); ++f) {
-    const std::uint32_t begin = cell.starts[f], end = cell.starts[f + 1];
-    for (std::uint32_t k = begin; k < end; ++k) {
-      const std::uint32_t a = cell.cycles[k], b = cell.cycles[k + 1 < end ? k + 1 : begin];
-      if (a > b) continue;
-      const Point &u = cell.vertices[a], &w = cell.vertices[b];
-      const double unit2 = std::max({(u - p).squaredNorm(), (w - p).squaredNorm(), 1.0});
-      cell.shortest_edge2 = std::min(cell.shortest_edge2, (u - w).squaredNorm() / unit2);
-    }
-  }
-}
-
-// Cells per slab: enough for containers to pay off, few enough that two threads share the work
-// evenly; fixed, so that the result does not depend on the thread count.
-constexpr std::size_t kSlabCells = 8192;
-// Voro++'s own estimate of the best number of seeds per block of its grid.
-constexpr double kSeedsPerBlock = 5.6;
-// First margin of neighbouring seeds around a slab, in units of the seed spacing.
-constexpr double kFirstMargin = 3.0;
 // Seeds the first shell of a cutter's first cell holds (later cells fetch as far as the cell
 // before them needed): most cells need fewer.
 constexpr std::size_t kNearestFirst = 32;
 // Half the side of the first cube of a cell cut at the scale of its nearest seed, in that unit.
 constexpr double kLocalCube = 64;
-
-// The seeds sorted along the axis that the slabs cut, and the bounds of the container.
-struct Layout {
-  int axis = 0;
-  Eigen::AlignedBox3d bounds;          // of all seeds
-  std::vector<Index> sorted;           // seed indices by coordinate along `axis`
-  std::vector<double> sorted_value;    // their coordinates along `axis`
-};
-
-Layout make_layout(const std::vector<Point>& positions) {
-  Layout l;
-  for (const Point& p : positions) l.bounds.extend(p);
-  Eigen::Index axis = 0;
-  l.bounds.sizes().maxCoeff(&axis);
-  l.axis = static_cast<int>(axis);
-  l.sorted.resize(positions.size());
-  std::iota(l.sorted.begin(), l.sorted.end(), Index{0});
-  std::sort(l.sorted.begin(), l.sorted.end(), [&](Index a, Index b) {
-    const double va = positions[a][l.axis], vb = positions[b][l.axis];
-    return va < vb || (va == vb && a < b);
-  });
-  l.sorted_value.resize(positions.size());
-  for (std::size_t k = 0; k < l.sorted.size(); ++k) l.sorted_value[k] = positions[l.sorted[k]][l.axis];
-  return l;
-}
-
-// A Voro++ container's box and grid.
-struct Box {
-  Point lower, upper;
-  int blocks[3];
-};
-
-class SlabWorker {
- public:
-  SlabWorker(const std::vector<Point>& positions, const Layout& layout) : positions_(positions), layout_(layout) {}
-
-  // Computes the cells of `pending` (indices into cell_seeds), writing out[entry], or marking
-  // lost[entry] where Voro++ gives no cell or one that keeps a wall of the container.
-  void run(const std::vector<Index>& cell_seeds, std::vector<std::size_t> pending, std::vector<RawCell>& out,
-           std::vector<char>& lost) {
-    const int a = layout_.axis;
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (std::size_t e : pending) {
-      lo = std::min(lo, positions_[cell_seeds[e]][a]);
-      hi = std::max(hi, positions_[cell_seeds[e]][a]);
-    }
-    double margin = kFirstMargin;
-    while (!pending.empty()) {
-      const double range_lo = std::max(layout_.bounds.min()[a], lo - margin);
-      const double range_hi = std::min(layout_.bounds.max()[a], hi + margin);
-      const bool open_lo = range_lo > layout_.bounds.min()[a], open_hi = range_hi < layout_.bounds.max()[a];
-      const Box box = container_box(range_lo, range_hi);
-      voro::container con(box.lower.x(), box.upper.x(), box.lower.y(), box.upper.y(), box.lower.z(), box.upper.z(),
-                          box.blocks[0], box.blocks[1], box.blocks[2], false, false, false, 8);
-      voro::particle_order order;
-      fill(con, order, range_lo, range_hi, cell_seeds, pending);
-      std::vector<std::size_t> retry;
-      double needed = 0;
-      for (std::size_t k = 0; k < pending.size(); ++k) {
-        const Index seed = cell_seeds[pending[k]];
-        if (!con.compute_cell(cell_, order.o[2 * k], order.o[2 * k + 1])) {
-          lost[pending[k]] = 1;
-          continue;
-        }
-        RawCell& cell = out[pending[k]];
-        extract(cell_, positions_[seed], cell, scratch_);
-        // The empty sphere of every vertex must lie within the seeds the container holds.
-        bool complete = true;
-        for (const Point& v : cell.vertices) {
-          const double r = (v - positions_[seed]).norm();
-          if (open_lo && v[a] - r < range_lo) complete = false, needed = std::max(needed, lo - (v[a] - r));
-          if (open_hi && v[a] + r > range_hi) complete = false, needed = std::max(needed, v[a] + r - hi);
-        }
-        if (!complete) {
-          retry.push_back(pending[k]);
-          continue;
-        }
-        if (std::any_of(cell.neighbours.begin(), cell.neighbours.end(), [](std::int32_t n) { return n < 0; })) {
-          lost[pending[k]] = 1;
-        }
-      }
-      pending.swap(retry);
-      margin = std::max(2 * margin, 1.25 * needed);
-    }
-  }
-
- private:
-  // The seeds with coordinates in [range_lo, range_hi] along the axis.
-  std::pair<std::size_t, std::size_t> in_range(double range_lo, double range_hi) const {
-    const auto& v = layout_.sorted_value;
-    return {static_cast<std::size_t>(std::lower_bound(v.begin(), v.end(), range_lo) - v.begin()),
-            static_cast<std::size_t>(std::upper_bound(v.begin(), v.end(), range_hi) - v.begin())};
-  }
-
-  Box container_box(double range_lo, double range_hi) const {
-    const int a = layout_.axis;
-    const auto [first, last] = in_range(range_lo, range_hi);
-    // One unit of room beyond the outermost seeds, so that none sits on a wall.
-    Box box{layout_.bounds.min() - Point::Ones(), layout_.bounds.max() + Point::Ones(), {1, 1, 1}};
-    box.lower[a] = range_lo - 1;
-    box.upper[a] = range_hi + 1;
-    const Point size = box.upper - box.lower;
-    const double block = std::cbrt(size.prod() * kSeedsPerBlock / static_cast<double>(last - first));
-    for (int d = 0; d < 3; ++d) box.blocks[d] = static_cast<int>(std::clamp(std::ceil(size[d] / block), 1.0, 1024.0));
-    return box;
-  }
-
-  // Puts the seeds in range into the container, the cells to compute last and in `order`.
-  void fill(voro::container& con, voro::particle_order& order, double range_lo, double range_hi,
-            const std::vector<Index>& cell_seeds, const std::vector<std::size_t>& pending) const {
-    const auto [first, last] = in_range(range_lo, range_hi);
-    std::vector<Index> own(pending.size());
-    for (std::size_t k = 0; k < pending.size(); ++k) own[k] = cell_seeds[pending[k]];
-    std::sort(own.begin(), own.end());
-    for (std::size_t k = first; k < last; ++k) {
-      const Index s = layout_.sorted[k];
-      if (std::binary_search(own.begin(), own.end(), s)) continue;
-      const Point& p = positions_[s];
-      con.put(static_cast<int>(s), p.x(), p.y(), p.z());
-    }
-    for (std::size_t e : pending) {
-      const Index s = cell_seeds[e];
-      const Point& p = positions_[s];
-      con.put(order, static_cast<int>(s), p.x(), p.y(), p.z());
-    }
-  }
-
-  const std::vector<Point>& positions_;
-  const Layout& layout_;
-  voro::voronoicell_neighbor cell_;
-  Scratch scratch_;
-};
 
 using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
 
@@ -542,30 +312,6 @@ std::vector<std::size_t> cells_reached(const std::vector<Point>& positions, cons
   for (std::size_t c = 0; c < cells.size(); ++c) {
     if (reached[c]) out.push_back(c);
   }
-  return out;
-}
-
-std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds,
-                                                         std::vector<char>& lost) {
-  std::vector<RawCell> out(cell_seeds.size());
-  lost.assign(cell_seeds.size(), 0);
-  if (cell_seeds.empty()) return out;
-  const Layout layout = make_layout(positions);
-
-  // Slabs: runs of kSlabCells cells in the order of their seeds along the axis.
-  std::vector<std::size_t> by_axis(cell_seeds.size());
-  std::iota(by_axis.begin(), by_axis.end(), std::size_t{0});
-  std::sort(by_axis.begin(), by_axis.end(), [&](std::size_t x, std::size_t y) {
-    const double vx = positions[cell_seeds[x]][layout.axis], vy = positions[cell_seeds[y]][layout.axis];
-    return vx < vy || (vx == vy && x < y);
-  });
-  const std::size_t slabs = (cell_seeds.size() + kSlabCells - 1) / kSlabCells;
-  tbb::parallel_for(std::size_t{0}, slabs, [&](std::size_t s) {
-    const auto begin = by_axis.begin() + static_cast<std::ptrdiff_t>(s * kSlabCells);
-    const auto end = by_axis.begin() + static_cast<std::ptrdiff_t>(std::min(by_axis.size(), (s + 1) * kSlabCells));
-    SlabWorker worker(positions, layout);
-    worker.run(cell_seeds, std::vector<std::size_t>(begin, end), out, lost);
-  });
   return out;
 }
 

@@ -6,7 +6,7 @@
 
 #include "vorocrust/surface_mesh.hpp"
 
-namespace vorocrust {
+namespace vorocrust::geometry {
 
 struct TriangleShape {
   std::array<double, 3> angles_degrees{};  // at the corners a, b, c
@@ -18,4 +18,4 @@ struct TriangleShape {
 
 TriangleShape triangle_shape(const Point& a, const Point& b, const Point& c);
 
-}  // namespace vorocrust
+}  // namespace vorocrust::geometry

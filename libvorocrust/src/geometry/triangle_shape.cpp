@@ -1,10 +1,10 @@
-#include "quality/triangle_shape.hpp"
+#include "geometry/triangle_shape.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-namespace vorocrust {
+namespace vorocrust::geometry {
 
 TriangleShape triangle_shape(const Point& a, const Point& b, const Point& c) {
   TriangleShape shape;
@@ -28,4 +28,4 @@ TriangleShape triangle_shape(const Point& a, const Point& b, const Point& c) {
   return shape;
 }
 
-}  // namespace vorocrust
+}  // namespace vorocrust::geometry
