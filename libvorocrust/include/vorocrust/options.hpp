@@ -75,6 +75,9 @@ struct VOROCRUST_API MeshOptions {
   // get a seed at their centroid, for at most 2 rounds (cells/repair_cells.hpp); 0 splits none.
   // 5 by default, above the paper's 4.86 for its smooth model.
   double max_aspect_ratio = kDefaultMaxAspectRatio;
+  // Faces between two cells more skew than this (checkMesh's skewness) get a repair seed
+  // (cells/repair_seeds.hpp). 4 by default, where checkMesh calls a face highly skew.
+  double max_skewness = kDefaultMaxSkewness;
   Stage stop_after = Stage::Cells;
   std::uint64_t seed = 0;  // random seed; equal seeds give equal meshes
   int threads = 0;         // worker threads, 0 = all hardware threads; results do not depend on it
@@ -84,6 +87,7 @@ struct VOROCRUST_API MeshOptions {
 
   static constexpr double kDefaultSmoothingTolerance = 0.0075;
   static constexpr double kDefaultMaxAspectRatio = 5, kLowestMaxAspectRatio = 3;
+  static constexpr double kDefaultMaxSkewness = 4;
   static constexpr double kSharpAngleDegrees = 30, kSmoothSharpAngleDegrees = 60;
   static constexpr int kSmoothSmoothingIterations = 6;
   static constexpr double kSmoothMinTriangleAngleDegrees = 30, kMaxMinTriangleAngleDegrees = 30;

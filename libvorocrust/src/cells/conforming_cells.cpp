@@ -5,7 +5,6 @@
 
 #include "cells/growing_cells.hpp"
 #include "cells/repair_seeds.hpp"
-#include "vorocrust/face_skewness.hpp"
 
 namespace vorocrust {
 
@@ -21,7 +20,7 @@ class RepairedCells {
       : seeds_(seeds), caps_(caps), balls_(balls), regions_(regions), options_(options), phases_(phases), stats_(stats) {
     skew_ = phases_("cells", [&] {
       cells_.emplace(seeds_, options_.cells);
-      return cells_->skew_faces(kHighSkewness);
+      return cells_->skew_faces(options_.max_skewness);
     });
   }
 
@@ -73,7 +72,7 @@ class RepairedCells {
     caps_.insert(caps_.end(), added.begin(), added.end());
     seeds_.insert(seeds_.end(), added.begin(), added.end());
     cells_->add_seeds(seeds_);
-    return cells_->skew_faces(kHighSkewness);
+    return cells_->skew_faces(options_.max_skewness);
   }
 
   std::vector<Seed>& seeds_;

@@ -2,7 +2,7 @@
 //
 // Contract of conforming_cells(seeds, caps, balls, regions, options, phases, stats):
 // - Cuts the cell of every material seed ("cells").
-// - Faces still highly skew (kHighSkewness) get a repair seed (repair_seeds.hpp) and the cells
+// - Faces more skew than options.max_skewness get a repair seed (repair_seeds.hpp) and the cells
 //   about the new seeds are cut again ("skew repair"). A repair seed in a thin wedge between
 //   crossing surfaces can make a skew face beside the one it removes, so rounds go on while the
 //   count falls: two rounds without a fall, a round with no seed to place, or 24 rounds end it.
@@ -31,6 +31,7 @@ class RegionLocator;
 struct ConformingCellsOptions {
   CellsOptions cells;
   double max_aspect_ratio = 0;  // 0: no splits
+  double max_skewness = 4;      // checkMesh's bound of a highly skew face
 };
 
 VoronoiMesh conforming_cells(std::vector<Seed>& seeds, std::vector<Seed>& caps, const BallIndex& balls,

@@ -48,6 +48,7 @@ ConformingCellsOptions cells_options(const MeshOptions& o) {
   ConformingCellsOptions c;
   c.cells.threads = o.threads;
   c.max_aspect_ratio = o.max_aspect_ratio;
+  c.max_skewness = o.max_skewness;
   return c;
 }
 geometry::Box bounding_box(const SurfaceMesh& mesh) {

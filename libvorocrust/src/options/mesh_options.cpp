@@ -53,7 +53,7 @@ OptionValue optional_number(const std::optional<T>& x) {
 
 // The table. Help texts say what an option does in the paper's words and name no flag: each front
 // end adds its own spelling, the default and the range (default_text, range_text).
-const std::array<OptionSpec, 17> kSpecs = {{
+const std::array<OptionSpec, 18> kSpecs = {{
     {.name = "lipschitz",
      .kind = OptionKind::Real,
      .label = "Lipschitz constant L",
@@ -262,6 +262,20 @@ const std::array<OptionSpec, 17> kSpecs = {{
      .also_means = "no splits",
      .get = [](const MeshOptions& o) -> OptionValue { return o.max_aspect_ratio; },
      .set = [](MeshOptions& o, const OptionValue& v) { o.max_aspect_ratio = std::get<double>(v); }},
+    {.name = "max_skewness",
+     .kind = OptionKind::Real,
+     .label = "Largest face skewness",
+     .help = "Faces between two cells more skew than this (as checkMesh measures skewness) get a seed that "
+             "repairs them, for as long as the count of such faces falls",
+     .section = "3",
+     .group = "Interior",
+     .default_value = MeshOptions::kDefaultMaxSkewness,
+     .min = 0,
+     .max = kInf,
+     .min_open = true,
+     .max_open = true,
+     .get = [](const MeshOptions& o) -> OptionValue { return o.max_skewness; },
+     .set = [](MeshOptions& o, const OptionValue& v) { o.max_skewness = std::get<double>(v); }},
     {.name = "stop_after",
      .kind = OptionKind::Choice,
      .label = "Stop after",
