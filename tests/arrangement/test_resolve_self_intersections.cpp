@@ -183,7 +183,8 @@ TEST(ResolveSelfIntersections, SharedModelsNoLongerCutThemselves) {
                         Case{"cgal_bones.off", 27}, Case{"igl_camelhead.off", 1}}) {
     SCOPED_TRACE(c.name);
     SurfaceMesh input = read_mesh(test::model(c.name));
-    validate(input, {.self_intersections_are_errors = false});
+    // Unfolding would take igl_camelhead's crossings away with its folds.
+    validate(input, {.fix_folds = false, .self_intersections_are_errors = false});
     ASSERT_FALSE(geometry::find_self_intersections(input).empty());
     const SurfaceMesh before = input;
     SelfIntersectionStats stats;

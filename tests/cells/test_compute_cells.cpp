@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <string>
 #include <map>
 #include <numeric>
 #include <random>
@@ -14,6 +16,7 @@
 #include "cells/voronoi_cells.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
+#include "vorocrust/seeds.hpp"
 
 namespace vorocrust {
 namespace {
@@ -77,6 +80,28 @@ TEST(Cells, DegenerateLatticeWeldsIntoCubes) {
     for (const VoronoiFace& f : m.faces) used.insert(f.points.begin(), f.points.end());
     EXPECT_EQ(used.size(), m.points.size()) << "every point belongs to a face";
   }
+}
+
+// Cells far smaller than the frame's unit among nearly cospherical seeds: the seeds of a smoothed
+// femur scan within 5e-5 of a spot where its balls had shrunk to 5e-7 (a millionth of the model),
+// with outside seeds 0.2 apart around them, so that the frame's unit is 2^-4 and these cells 1e-4
+// of it. Cut in the frame's units, Voro++'s plane tolerance (absolute, on squared lengths) let a
+// cell keep a face 1e-5 across toward one seed where another, 1.2e-8 nearer, should have cut it,
+// and the welded cells never agreed ("is not closed after welding"). Cut at their own scale, they
+// do.
+TEST(Cells, TinyCellsAmongNearlyCosphericalSeeds) {
+  const std::vector<Seed> seeds = read_seeds_csv(std::string(VOROCRUST_TEST_DATA_DIR) + "/cells/tiny_cells_among_large.csv");
+  ASSERT_EQ(seeds.size(), 1346u);
+  const VoronoiMesh m = compute_cells(seeds);
+  // Seeds 1.2e-8 apart at coordinates near 0.5 keep 8 digits of their link: a point's distances to
+  // the two agree to a few units in the last place of the coordinates, 1e-7 of the link.
+  expect_valid(m, seeds, 1e-6);
+  std::size_t materials = 0;
+  for (const Seed& s : seeds) materials += s.region > 0;
+  EXPECT_EQ(m.cells.size(), materials);
+  double smallest = std::numeric_limits<double>::infinity();
+  for (const VoronoiCell& c : m.cells) smallest = std::min(smallest, c.volume);
+  EXPECT_LT(smallest, 1e-18);  // cells a few 1e-7 across: the configuration is the one meant
 }
 
 TEST(Cells, SameResultForOneAndTwoThreads) {

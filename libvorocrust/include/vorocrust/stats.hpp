@@ -95,6 +95,8 @@ struct VOROCRUST_API FeatureCounts {
   // After those splits, how far Loop's rules move the vertex they move farthest (its limit point
   // along its normal), over the bounding-box diagonal; 0 without a smoothing tolerance.
   double smoothing_largest_offset = 0;
+  // Faces the smoothing folded over all their neighbours, unfolded (io/unfold_faces.hpp).
+  std::size_t smoothing_faces_unfolded = 0;
   int smoothing_rounds_refused = 0;   // fewest rounds that made a new feature (0: none did)
   // Fewest rounds refused as they carried the surface through itself: faces crossing, or a shell
   // moved wholly across another (0: none was).

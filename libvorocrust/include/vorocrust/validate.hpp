@@ -5,6 +5,9 @@
 // closed shells turned inside out, and self-intersections (found with a bounding-volume tree
 // over the faces and decided by exact orientation predicates).
 //
+// Faces folded over their neighbours are unfolded in place (fix_folds), as the paper's sampling
+// cannot cover a surface that turns back on itself over one face.
+//
 // Orientation problems are *fixed* in place (and reported as such) when `fix_orientation` is
 // set: each patch of faces joined by manifold edges is made consistent, and a closed shell is
 // turned so its normals point out of the volume it encloses. Everything else is only reported.
@@ -40,6 +43,11 @@ VOROCRUST_API const char* to_string(Finding::Severity severity) noexcept;
 
 struct VOROCRUST_API ValidationOptions {
   bool fix_orientation = true;
+  // Faces folded over all their neighbours (an inverted triangle of a decimated scan, the surface
+  // turning back on itself over one face) are unfolded by moving their free vertices to the
+  // centroid of their neighbours; reported as fixed, or as an error where that does not unfold
+  // them. No fold-free surface changes. Needs fix_orientation (the normals are compared).
+  bool fix_folds = true;
   bool check_self_intersections = true;
   // Whether intersecting faces are an Error (meshing refuses them) or a Warning (the mesher
   // resolves them, MeshOptions::self_intersections).

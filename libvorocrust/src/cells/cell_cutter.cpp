@@ -25,6 +25,10 @@ namespace {
 constexpr std::size_t kNearestFirst = 32;
 // Half the side of the first cube of a cell cut at the scale of its nearest seed, in that unit.
 constexpr double kLocalCube = 64;
+// A cell whose farthest vertex lies nearer its seed than 2^-6 frame units is cut again at its
+// local scale: Voro++'s plane tolerance there stands for more than 1e-8 of the cell's size.
+// (Voro++ keeps vertices at twice their coordinates, and so the squared radius at four times.)
+constexpr double kTinyCell2 = 4.0 / 4096;
 
 using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
 
@@ -64,11 +68,18 @@ class CellCutter {
     // the assembly's fallbacks do so: neighbours cut at two scales round their shared vertices
     // apart.
     const double scale = at_local_scale ? local_scale(seed) : 1;
-    if (scale < 1) {
-      cut_from(seed, kLocalCube * growth, scale, out);
-      if (std::none_of(out.neighbours.begin(), out.neighbours.end(), [](std::int32_t n) { return n < 0; })) return;
-    }
+    if (scale < 1 && cut_at_scale(seed, growth, scale, out)) return;
     cut_from(seed, reach * growth, 1, out);
+    // Voro++'s tolerance is absolute on the plane test (1e-11 on |d|^2 - x.d, in squared units):
+    // for a cell far smaller than the frame's unit it stands for a distance that is no longer
+    // negligible beside the cell (a cell 1e-4 units across, among nearly cospherical seeds, kept
+    // a face 1e-5 across toward a seed another one 1.2e-8 nearer should have cut, and its
+    // neighbours never agreed on it). Such a cell is cut again in units of its own size (a power
+    // of two, so exact), from a cube that holds it.
+    if (!at_local_scale && radius2_ < kTinyCell2) {
+      const double size = std::exp2(std::round(std::log2(std::sqrt(radius2_) / 2)));
+      if (!cut_at_scale(seed, growth, size, out)) cut_from(seed, reach * growth, 1, out);
+    }
   }
 
  private:
@@ -98,6 +109,13 @@ class CellCutter {
     std::vector<std::pair<double, std::uint32_t>>& out_;
     std::size_t within_ = 0;
   };
+
+  // The cell cut at `scale` from a cube of kLocalCube such units; false, leaving `out` cut so,
+  // when the cell keeps a wall of that cube (a cube of the frame's units would then do better).
+  bool cut_at_scale(Index seed, double growth, double scale, RawCell& out) {
+    cut_from(seed, kLocalCube * growth, scale, out);
+    return std::none_of(out.neighbours.begin(), out.neighbours.end(), [](std::int32_t n) { return n < 0; });
+  }
 
   // The cell cut from the cube of half-side `half_side` in units of `scale`.
   void cut_from(Index seed, double half_side, double scale, RawCell& out) {

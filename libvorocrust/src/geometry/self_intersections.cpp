@@ -14,15 +14,6 @@
 #include "geometry/triangle_intersection.hpp"
 
 namespace vorocrust::geometry {
-namespace {
-
-TriangleCorners corners_of(const SurfaceMesh& mesh, std::size_t face) {
-  const Triangle& t = mesh.triangles[face];
-  return {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
-}
-
-}  // namespace
-
 std::vector<FacePair> find_self_intersections(const SurfaceMesh& mesh) {
   const std::size_t num_faces = mesh.num_faces();
   std::vector<Box> boxes(num_faces);

@@ -21,6 +21,11 @@ namespace vorocrust::geometry {
 
 using TriangleCorners = std::array<Point, 3>;
 
+inline TriangleCorners corners_of(const SurfaceMesh& mesh, std::size_t face) {
+  const Triangle& t = mesh.triangles[face];
+  return {mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]};
+}
+
 // shared[i] is the corner of the second face on the same mesh vertex as corner i of the first
 // face, or -1 when corner i is not shared.
 using SharedCorners = std::array<int, 3>;

@@ -1,12 +1,14 @@
 #include "vorocrust/validate.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <deque>
 
 #include "core/edge_topology.hpp"
 #include "core/surface_measures.hpp"
 #include "geometry/predicates.hpp"
 #include "geometry/self_intersections.hpp"
+#include "io/unfold_faces.hpp"
 
 namespace vorocrust {
 
@@ -210,11 +212,41 @@ const Finding* ValidationReport::find(const std::string& code) const {
   return nullptr;
 }
 
+std::string number_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+// Faces folded over all their neighbours, unfolded where moving their vertices does it.
+void fix_folds(SurfaceMesh& mesh, const ValidationOptions& options, ValidationReport& report) {
+  const io::Unfolding unfolding = io::unfold_faces(mesh);
+  if (unfolding.folded.empty()) return;
+  std::vector<std::size_t> folded(unfolding.folded.begin(), unfolding.folded.end());
+  if (!unfolding.remaining.empty()) {
+    std::vector<std::size_t> remaining(unfolding.remaining.begin(), unfolding.remaining.end());
+    report.findings.push_back(face_finding(
+        mesh, Finding::Severity::Error, "folded-face",
+        "faces folded over all their neighbours (the surface turns back on itself over them) that moving their "
+        "vertices does not unfold; repair the input there",
+        remaining, options.max_listed));
+    return;
+  }
+  Finding finding = face_finding(mesh, Finding::Severity::Fixed, "folded-face",
+                                 "faces folded over all their neighbours (the surface turned back on itself over them)",
+                                 folded, options.max_listed);
+  finding.message += "; unfolded by moving " + std::to_string(unfolding.moved_vertices) +
+                     " vertices to the centroid of their neighbours, by at most " +
+                     number_text(unfolding.largest_move);
+  report.findings.push_back(std::move(finding));
+}
+
 ValidationReport validate(SurfaceMesh& mesh, const ValidationOptions& options) {
   ValidationReport report;
   check_zero_area(mesh, options, report);
   check_duplicates(mesh, options, report);
   if (options.fix_orientation) fix_orientation(mesh, build_edge_topology(mesh), options, report);
+  if (options.fix_orientation && options.fix_folds) fix_folds(mesh, options, report);
   if (options.check_self_intersections) check_self_intersections(mesh, options, report);
   return report;
 }

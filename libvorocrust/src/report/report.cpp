@@ -321,6 +321,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                        {"smoothing_bounding_rounds", f.smoothing_bounding_rounds},
                        {"smoothing_largest_offset", f.smoothing_largest_offset},
                        {"smoothing_rounds_refused", f.smoothing_rounds_refused},
+                       {"smoothing_faces_unfolded", f.smoothing_faces_unfolded},
                        {"smoothing_rounds_crossing", f.smoothing_rounds_crossing}};
     // The rows of the paper's Table 1, with the counts behind them.
     doc["refinement"] = {
