@@ -79,16 +79,27 @@ std::size_t drop_edge_points(std::vector<CellFaces>& cells, std::size_t num_poin
   for (const auto& u : use) dropped += u.load(std::memory_order_relaxed) == 1;
   if (dropped == 0) return 0;
   tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {
+    // A face left with fewer than three points spanned no area (a triangle whose corner only
+    // split an edge of its neighbour face): dropped, as welding drops such faces, and by both
+    // cells beside it alike, as both see the same points.
     CellFaces& cell = cells[c];
-    std::size_t kept = 0;
+    std::size_t kept = 0, kept_faces = 0;
     for (std::size_t f = 0; f < cell.num_faces(); ++f) {
       const std::uint32_t begin = cell.starts[f], end = cell.starts[f + 1];
-      cell.starts[f] = static_cast<std::uint32_t>(kept);
+      const std::size_t first = kept;
       for (std::uint32_t k = begin; k < end; ++k) {
         if (use[cell.points[k]].load(std::memory_order_relaxed) != 1) cell.points[kept++] = cell.points[k];
       }
+      if (kept - first < 3) {
+        kept = first;
+        continue;
+      }
+      cell.starts[kept_faces] = static_cast<std::uint32_t>(first);
+      cell.neighbours[kept_faces++] = cell.neighbours[f];
     }
-    cell.starts[cell.num_faces()] = static_cast<std::uint32_t>(kept);
+    cell.neighbours.resize(kept_faces);
+    cell.starts.resize(kept_faces + 1);
+    cell.starts[kept_faces] = static_cast<std::uint32_t>(kept);
     cell.points.resize(kept);
   });
   return dropped;

@@ -29,7 +29,8 @@ std::optional<CellFaces> welded_faces(const RawCell& cell, std::size_t first_ins
 // edge. Round-off leaves them at degenerate edges, where four seeds lie on one circle (VoroCrust
 // puts its seeds where spheres meet, so the two pairs of one ball pair share a circle): a plane
 // that touches a cell along such an edge splits it, and the neighbour across the face, cut
-// otherwise, does not. Returns how many points were dropped (`num_points`: the welded points).
+// otherwise, does not. Faces left with fewer than three points go too. Returns how many points
+// were dropped (`num_points`: the welded points).
 std::size_t drop_edge_points(std::vector<CellFaces>& cells, std::size_t num_points);
 
 }  // namespace vorocrust::cells
