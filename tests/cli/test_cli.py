@@ -303,6 +303,26 @@ class Balls(unittest.TestCase):
                 with open(os.path.join(again, "balls.csv")) as f:
                     self.assertEqual(f.read().splitlines(), rows)
 
+    def test_a_scan_meshed_as_a_cad_part_gets_the_hint_naming_smooth(self):
+        # The bunny at the default sharp angle: its folds would be creases. With --smooth, or for a
+        # CAD part (the fandisk), no hint.
+        hint = "looks like a scan or a tessellation of a curved shape"
+        with tempfile.TemporaryDirectory() as out:
+            r = run("mesh", model("igl_bunny.off"), "-o", out, "--stop-after", "balls")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            lines = [line for line in r.stderr.splitlines() if hint in line]
+            self.assertEqual(len(lines), 1, r.stderr)
+            self.assertIn("Mesh it with --smooth, or with a larger --sharp-angle", lines[0])
+            self.assertIn("bend past --sharp-angle (30 degrees)", lines[0])
+            # Said before the refinement starts.
+            self.assertLess(r.stderr.index(hint), r.stderr.index("refinement"))
+            r = run("mesh", model("igl_bunny.off"), "-o", out, "--stop-after", "balls", "--smooth")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertNotIn(hint, r.stderr)
+            r = run("mesh", model("cgal_fandisk.off"), "-o", out, "--stop-after", "balls")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertNotIn(hint, r.stderr)
+
     def test_sizing_file_bounds_radii_and_bad_sizing_names_the_line(self):
         with tempfile.TemporaryDirectory() as out:
             sizing = os.path.join(out, "sizing.txt")

@@ -2,8 +2,11 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
+#include <numbers>
 #include <regex>
 
+#include "features/scan_likeness.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/balls.hpp"
 #include "vorocrust/error.hpp"
@@ -178,6 +181,25 @@ void validate_input(JobResult& result, const MeshOptions& options, const Warning
   }
 }
 
+// The paper's sharp-edge rule turns a scan's folds into a crowd of tiny creases and corners; said
+// before the refinement, with the options that mesh it well (features/scan_likeness.hpp).
+void suggest_smooth(JobResult& result, const MeshOptions& options, const WarningCallback& warn) {
+  if (options.smooth) return;
+  const features::SharpBends bends = features::sharp_bends(result.input, options.sharp_angle() * std::numbers::pi / 180);
+  if (!bends.looks_like_scan()) return;
+  const auto percent = static_cast<int>(std::lround(100.0 * static_cast<double>(bends.near_sharp_angle) /
+                                                    static_cast<double>(bends.sharp_edges)));
+  result.warnings.push_back(
+      "warning: the surface looks like a scan or a tessellation of a curved shape: " +
+      std::to_string(bends.sharp_edges) + " of its edges bend past `sharp_angle` (" +
+      std::to_string(static_cast<int>(std::lround(options.sharp_angle()))) + " degrees), " + std::to_string(percent) +
+      " % of them by less than 15 degrees more, in " + std::to_string(bends.chains) + " chains of " +
+      std::to_string(bends.median_chain) +
+      " edges at the median: each would be protected as a crease. Mesh it with `smooth`, or with a larger "
+      "`sharp_angle` to keep only its true creases");
+  if (warn) warn(result.warnings.back());
+}
+
 RunReport report_of(const Job& job) {
   RunReport report;
   report.command = job.command;
@@ -210,6 +232,7 @@ JobResult run_job(const Job& job, const ProgressCallback& progress, const Warnin
     report.mesh = &result.input;
     phases.begin_own("validating");
     validate_input(result, options, warn);
+    suggest_smooth(result, options, warn);
     result.info = mesh_info(result.input);
     report.input = &result.info;
     report.validation = &result.validation;
