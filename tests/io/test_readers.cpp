@@ -199,6 +199,54 @@ TEST(ReadPly, AsciiAndBinaryWithRegionsAndExtraProperties) {
   EXPECT_EQ(b.triangles[0], (Triangle{0, 1, 2}));
 }
 
+// Found by fuzzing (tests/fuzz/corpus/ply/element-without-properties.ply): an element with no
+// property takes no byte per record, so its count bounds nothing; 4e18 of them are skipped, not
+// counted through. An element with properties may not promise more records than the file holds.
+TEST(ReadPly, ElementCountsBoundedByTheFile) {
+  test::TempDir dir("readers");
+  const std::string tetra =
+      "element vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const SurfaceMesh m =
+      read_mesh(write_text(dir, "empty_element.ply", "ply\nformat ascii 1.0\nelement nothing 4000000000000000000\n" + tetra));
+  EXPECT_EQ(m.num_faces(), 1u);
+  try {
+    read_mesh(write_text(dir, "many.ply", "ply\nformat ascii 1.0\nelement junk 4000000000\nproperty int a\n" + tetra));
+    ADD_FAILURE() << "a count beyond the file's size was read";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), Error::Kind::UnreadableInput);
+    EXPECT_NE(std::string(e.what()).find("more 'junk' elements (4000000000) than the file can hold"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Found by fuzzing (tests/fuzz/corpus/ply/huge-float-index.ply): indices and labels given as
+// floats far beyond the integers are refused and named, never cast.
+TEST(ReadPly, FloatIndicesAndLabelsBeyondTheIntegers) {
+  test::TempDir dir("readers");
+  const std::string vertices =
+      "element vertex 3\nproperty double x\nproperty double y\nproperty double z\n";
+  const auto refusal = [&](const std::string& name, const std::string& text) -> std::string {
+    try {
+      read_mesh(write_text(dir, name, text));
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), Error::Kind::UnreadableInput);
+      return e.what();
+    }
+    return "read";
+  };
+  EXPECT_NE(refusal("index.ply", "ply\nformat ascii 1.0\n" + vertices +
+                                     "element face 1\nproperty list uchar float vertex_indices\nend_header\n"
+                                     "0 0 0\n1 0 0\n0 1 0\n3 0 1 3.3e124\n")
+                .find("face 0 refers to vertex 3.3e+124 but the file has 3 vertices"),
+            std::string::npos);
+  EXPECT_NE(refusal("label.ply", "ply\nformat ascii 1.0\n" + vertices +
+                                     "element face 1\nproperty list uchar int vertex_indices\nproperty float back_region\n"
+                                     "property float front_region\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 1e20 0\n")
+                .find("face 0 has a region label outside -1..65535"),
+            std::string::npos);
+}
+
 TEST(ReadOff, HeaderAndCountsOnOneLineAndComments) {
   test::TempDir dir("readers");
   const SurfaceMesh m = read_mesh(write_text(dir, "t.off", "OFF 3 1 0 # counts here\n# a comment\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n"));

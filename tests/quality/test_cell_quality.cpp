@@ -51,6 +51,7 @@ VoronoiMesh tetrahedron_mesh() {
   for (const std::vector<Index>& polygon : std::vector<std::vector<Index>>{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}}) {
     VoronoiFace f;
     f.points = polygon;
+    f.owner = 0;  // every face has its owner cell (AddressSanitizer caught the skewness reading cell -1)
     cell.faces.push_back(static_cast<Index>(m.faces.size()));
     m.faces.push_back(f);
   }

@@ -56,8 +56,12 @@ double SizingField::operator()(const Point& p) const {
   nanoflann::KNNResultSet<double, std::uint32_t> result(k);
   result.init(index, squared);
   samples_->tree->findNeighbors(result, query, nanoflann::SearchParams());
+  // Samples so far away that their squared distance overflows are never found; with none left,
+  // the field is unknown here and the largest size holds.
+  const std::size_t found = result.size();
+  if (found == 0) return max_size_;
   double weight_sum = 0, value = 0, lo = std::numeric_limits<double>::infinity(), hi = 0;
-  for (std::size_t i = 0; i < k; ++i) {
+  for (std::size_t i = 0; i < found; ++i) {
     const double size = samples_->sizes[index[i]];
     if (squared[i] == 0) return std::min(max_size_, size);
     const double w = 1.0 / squared[i];
@@ -66,6 +70,8 @@ double SizingField::operator()(const Point& p) const {
     lo = std::min(lo, size);
     hi = std::max(hi, size);
   }
+  // Weights that underflow to zero leave the nearest sizes' range to choose from.
+  if (!(weight_sum > 0)) return std::min(max_size_, lo);
   // A weighted mean lies between its values; rounding must not push it past them.
   return std::min(max_size_, std::clamp(value / weight_sum, lo, hi));
 }

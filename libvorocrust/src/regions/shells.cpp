@@ -8,7 +8,8 @@ namespace vorocrust::regions {
 Shells join_sides(const SurfaceMesh& mesh, const EdgeTopology& topology) {
   UnionFind sides(2 * mesh.num_faces());
   for (std::size_t e = 0; e < topology.num_edges(); ++e) {
-    const auto [a, b] = topology.edges[e];
+    // Named copies: a lambda may not capture structured bindings before clang 16.
+    const Index a = topology.edges[e][0], b = topology.edges[e][1];
     const std::vector<Index> around = faces_around_edge(mesh, a, b, topology.faces_of(e));
     // A face running a -> b has its normal turned the way the angle grows, so its front faces
     // the next wedge; one running b -> a faces it with its back.
