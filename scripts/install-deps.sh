@@ -11,6 +11,10 @@ packages=(
   libeigen3-dev libnanoflann-dev voro++-dev libopenmesh-dev libtbb-dev
   # the command-line program
   libcli11-dev nlohmann-json3-dev
+  # the Exodus II output
+  libexodusii-dev
+  # ParaView's readers in the tests (pvpython)
+  paraview
   # tests and benchmarks (the CLI tests run under Debian's own python3)
   libgtest-dev libgmock-dev libbenchmark-dev python3
   # the cells' exports checked by the real readers: VTK's Python module and OpenFOAM's checkMesh

@@ -192,6 +192,28 @@ CONNECTIONS), a cell-id list <material>.txt per material and boundary connection
 boundary patch. Each file is written atomically.
 )doc");
   def_writer<Cells>(
+      m, "write_exodus", "cells", "path", [](const Cells& c, const auto& p) { write_exodus(*c.mesh, p); }, R"doc(
+Writes the cells as an Exodus II file (mesh.exo): one NFACED block per material named after it,
+its faces in one NSIDED block, side sets per boundary patch and interface, and the cell variables
+seed, sitex/y/z and volume. ParaView opens it with its Exodus II reader. Atomically.
+)doc");
+  m.def(
+      "read_exodus",
+      [](const py::object& where) {
+        const std::filesystem::path p = to_path(where);
+        std::shared_ptr<const VoronoiMesh> mesh;
+        {
+          py::gil_scoped_release release;
+          mesh = std::make_shared<const VoronoiMesh>(read_exodus(p));
+        }
+        return make_cells(std::move(mesh));
+      },
+      py::arg("path"), R"doc(
+Reads an Exodus II file as write_exodus writes it back into Cells: the materials from the block
+ids, region_names from the block and side set names, volumes and centroids measured from the
+faces. Raises UnreadableInputError, naming the file, for anything else.
+)doc");
+  def_writer<Cells>(
       m, "write_openfoam", "cells", "case_dir", [](const Cells& c, const auto& p) { write_openfoam_case(*c.mesh, p); },
       R"doc(
 Writes the cells as an OpenFOAM case folder (constant/polyMesh and system/) on which

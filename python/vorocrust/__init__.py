@@ -44,6 +44,8 @@ from ._vorocrust import (  # noqa: F401  (the public interface)
     write_balls,
     write_openfoam,
     write_pflotran,
+    write_exodus,
+    read_exodus,
     write_seeds,
     write_surface,
     write_tough,
@@ -55,7 +57,7 @@ __all__ = [
     "Balls", "Cancelled", "Cells", "Error", "InternalError", "InvalidGeometryError", "MeshResult",
     "NotYetImplementedError", "OutputError", "Seeds", "Surface", "UnreadableInputError", "UsageError",
     "__version__", "DEFAULT_OPTIONS", "OPTIONS", "compute_cells", "info", "measure_surface_quality", "merge_surfaces", "mesh",
-    "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_outputs", "write_pflotran",
+    "read_exodus", "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_exodus", "write_outputs", "write_pflotran",
     "write_tough",
     "write_files", "write_seeds", "write_surface", "write_vtu", "OUTPUT_FORMATS", "VOLUME_FORMATS",
     "INTERIOR_MODES", "STAGES",
@@ -123,7 +125,8 @@ VOLUME_FORMATS = tuple(name for name, _, _, volume, _ in _vorocrust._OUTPUT_TABL
 
 # The part of a run each format is written from.
 _FORMAT_PARTS = {"balls": "balls", "seeds": "seeds", "obj": "surface", "ply": "surface", "svg": "run",
-                 "report": "run", "vtu": "cells", "openfoam": "cells", "tough": "cells", "pflotran": "cells"}
+                 "report": "run", "vtu": "cells", "openfoam": "cells", "tough": "cells", "pflotran": "cells",
+                 "exodus": "cells"}
 
 
 def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=None, cells=None):
@@ -133,7 +136,7 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
 
     formats: names from OUTPUT_FORMATS, each needing its part: "balls" balls, "seeds" seeds,
         "obj" and "ply" surface, "svg" and "report" run (a MeshResult), "vtu", "openfoam",
-        "tough" and "pflotran" cells. A format whose part is missing raises UsageError before anything is written.
+        "tough", "pflotran" and "exodus" cells. A format whose part is missing raises UsageError before anything is written.
 
     Every file is written atomically. Returns the paths written, in the order of `formats`.
     """
@@ -157,6 +160,7 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
         "openfoam": lambda: write_openfoam(cells, _at(folder, "case")),
         "tough": lambda: write_tough(cells, _at(folder, "MESH")),
         "pflotran": lambda: write_pflotran(cells, _at(folder, "pflotran")),
+        "exodus": lambda: write_exodus(cells, _at(folder, "mesh.exo")),
     }
     written = []
     for name in formats:
@@ -180,7 +184,7 @@ def write_outputs(result, folder, formats=None, cells=None):
     """Writes a run's results into `folder` (created when missing), as `vorocrust mesh` does.
 
     formats: names from OUTPUT_FORMATS ("balls", "seeds", "obj", "ply", "svg", "report",
-        "vtu", "openfoam", "tough", "pflotran"); None for every one the run has the parts for. Asking for a part the
+        "vtu", "openfoam", "tough", "pflotran", "exodus"); None for every one the run has the parts for. Asking for a part the
         run did not make (cells after stop_after="surface") raises UsageError and writes
         nothing.
     cells: the Cells to write the volume formats from, instead of result.cells: e.g.

@@ -169,7 +169,7 @@ class Mesh(unittest.TestCase):
             self.assertEqual(report["input"]["faces"], 446)
             self.assertEqual([t["phase"] for t in report["timings"]][:2], ["reading", "validating"])
             self.assertEqual(sorted(os.listdir(out)),
-                             ["MESH", "balls.csv", "balls.vtk", "case", "mesh.vtu", "pflotran", "quality.svg",
+                             ["MESH", "balls.csv", "balls.vtk", "case", "mesh.exo", "mesh.vtu", "pflotran", "quality.svg",
                               "report.json", "seeds.csv", "surface.obj", "surface.ply"])
             self.assertEqual(report["features"]["corners"], 12)
             self.assertEqual(report["refinement"]["balls"]["corner"], 12)

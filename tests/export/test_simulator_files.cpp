@@ -149,10 +149,10 @@ TEST(VolumeFormats, WriteWhatIsAskedAndRemoveWhatAnEarlierRunLeft) {
   const VoronoiMesh mesh = compute_cells(seeds);
   const test::TempDir dir("formats");
   write_volume_mesh(mesh, dir.path(), volume_format_names());
-  for (const char* name : {"mesh.vtu", "case", "MESH", "pflotran"}) EXPECT_TRUE(fs::exists(dir / name)) << name;
+  for (const char* name : {"mesh.vtu", "case", "MESH", "pflotran", "mesh.exo"}) EXPECT_TRUE(fs::exists(dir / name)) << name;
   write_volume_mesh(mesh, dir.path(), {"tough"});
   EXPECT_TRUE(fs::exists(dir / "MESH"));
-  for (const char* name : {"mesh.vtu", "case", "pflotran"}) EXPECT_FALSE(fs::exists(dir / name)) << name;
+  for (const char* name : {"mesh.vtu", "case", "pflotran", "mesh.exo"}) EXPECT_FALSE(fs::exists(dir / name)) << name;
   try {
     write_volume_mesh(mesh, dir.path(), {"tough", "gmsh"});
     FAIL() << "no error";

@@ -22,6 +22,7 @@ enum class OutputFormat {
   OpenFoam,    // case/: an OpenFOAM polyMesh with zones
   Tough,       // MESH: TOUGH's ELEME and CONNE blocks
   Pflotran,    // pflotran/: PFLOTRAN's explicit unstructured grid
+  Exodus,      // mesh.exo: Exodus II, a block per material, side sets per patch and interface
   Seeds,       // seeds.csv: the whole mesh in compact form
   SurfaceObj,  // surface.obj
   SurfacePly,  // surface.ply
@@ -40,8 +41,8 @@ struct VOROCRUST_API OutputFormatSpec {
 
 template <>
 struct ChoiceNames<OutputFormat> {
-  static constexpr std::array<std::string_view, 9> names = {"vtu", "openfoam", "tough", "pflotran", "seeds",
-                                                              "obj", "ply",      "balls", "svg"};
+  static constexpr std::array<std::string_view, 10> names = {"vtu", "openfoam", "tough", "pflotran", "exodus",
+                                                               "seeds", "obj", "ply", "balls", "svg"};
 };
 
 VOROCRUST_API std::span<const OutputFormatSpec> output_formats() noexcept;

@@ -6,6 +6,7 @@
 #include "vorocrust/cell_quality.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
+#include "vorocrust/exodus.hpp"
 #include "vorocrust/job.hpp"
 #include "vorocrust/face_orthogonality.hpp"
 #include "vorocrust/face_skewness.hpp"

@@ -11,7 +11,8 @@
 
 namespace vorocrust {
 
-void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
+void write_path_atomically(const std::filesystem::path& path,
+                           const std::function<void(const std::filesystem::path& temp)>& write) {
   static std::atomic<unsigned> counter{0};
   const std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   // Appended piece by piece: GCC 12 warns of an overlap (-Wrestrict) in "." + string.
@@ -19,29 +20,34 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
   name += path.filename().string();
   name += ".tmp" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
   const std::filesystem::path temp = parent / name;
-  const auto fail = [&](const std::string& why) {
+  try {
+    write(temp);
+  } catch (...) {
     std::error_code ignored;
     std::filesystem::remove(temp, ignored);
-    throw Error(Error::Kind::Output, "cannot write: " + why, {.file = path.string()});
-  };
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) fail(std::strerror(errno));
-    out.imbue(std::locale::classic());
-    try {
-      write(out);
-    } catch (...) {
-      out.close();
-      std::error_code ignored;
-      std::filesystem::remove(temp, ignored);
-      throw;
-    }
-    out.flush();
-    if (!out) fail("write failed (disk full?)");
+    throw;
   }
   std::error_code ec;
   std::filesystem::rename(temp, path, ec);
-  if (ec) fail(ec.message());
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(temp, ignored);
+    throw Error(Error::Kind::Output, "cannot write: " + ec.message(), {.file = path.string()});
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
+  write_path_atomically(path, [&](const std::filesystem::path& temp) {
+    const auto fail = [&](const std::string& why) {
+      throw Error(Error::Kind::Output, "cannot write: " + why, {.file = path.string()});
+    };
+    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
+    if (!out) fail(std::strerror(errno));
+    out.imbue(std::locale::classic());
+    write(out);
+    out.flush();
+    if (!out) fail("write failed (disk full?)");
+  });
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {

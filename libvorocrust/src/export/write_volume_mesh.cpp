@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "vorocrust/error.hpp"
+#include "vorocrust/exodus.hpp"
 #include "vorocrust/outputs.hpp"
 #include "vorocrust/write_openfoam.hpp"
 #include "vorocrust/write_pflotran.hpp"
@@ -34,6 +35,7 @@ void write_volume_format(const VoronoiMesh& mesh, const std::filesystem::path& f
     case OutputFormat::OpenFoam: write_openfoam_case(mesh, where); break;
     case OutputFormat::Tough: write_tough_mesh(mesh, where); break;
     case OutputFormat::Pflotran: write_pflotran(mesh, where); break;
+    case OutputFormat::Exodus: write_exodus(mesh, where); break;
     default: break;
   }
 }

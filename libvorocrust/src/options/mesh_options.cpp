@@ -310,7 +310,7 @@ const std::array<OptionSpec, 18> kSpecs = {{
      .kind = OptionKind::Choices,
      .label = "Outputs",
      .help = "What to write into the output folder: vtu (mesh.vtu), openfoam (case/), tough (MESH), pflotran "
-             "(pflotran/), seeds (seeds.csv), obj and ply (the surface), balls (balls.csv, balls.vtk, "
+             "(pflotran/), exodus (mesh.exo), seeds (seeds.csv), obj and ply (the surface), balls (balls.csv, balls.vtk, "
              "smoothed_surface.ply), svg (quality.svg); report.json is always written",
      .group = "Outputs",
      .default_value = std::vector<std::string>(choice_names<OutputFormat>().begin(), choice_names<OutputFormat>().end()),

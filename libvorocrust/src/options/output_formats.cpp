@@ -11,6 +11,7 @@ constexpr std::array<std::string_view, 1> kVtu = {"mesh.vtu"};
 constexpr std::array<std::string_view, 1> kCase = {"case"};
 constexpr std::array<std::string_view, 1> kMesh = {"MESH"};
 constexpr std::array<std::string_view, 1> kPflotran = {"pflotran"};
+constexpr std::array<std::string_view, 1> kExodus = {"mesh.exo"};
 constexpr std::array<std::string_view, 1> kSeeds = {"seeds.csv"};
 constexpr std::array<std::string_view, 1> kObj = {"surface.obj"};
 constexpr std::array<std::string_view, 1> kPly = {"surface.ply"};
@@ -18,7 +19,7 @@ constexpr std::array<std::string_view, 3> kBalls = {"balls.csv", "balls.vtk", "s
 constexpr std::array<std::string_view, 1> kSvg = {"quality.svg"};
 
 // In the order of OutputFormat, and of ChoiceNames<OutputFormat>.
-const std::array<OutputFormatSpec, 9> kOutputs = {{
+const std::array<OutputFormatSpec, 10> kOutputs = {{
     {OutputFormat::Vtu, "vtu", kVtu, Stage::Cells, true,
      "one VTK polyhedron per cell with its material, seed, volume and aspect ratio (ParaView)"},
     {OutputFormat::OpenFoam, "openfoam", kCase, Stage::Cells, true,
@@ -26,6 +27,9 @@ const std::array<OutputFormatSpec, 9> kOutputs = {{
     {OutputFormat::Tough, "tough", kMesh, Stage::Cells, true, "TOUGH's ELEME and CONNE blocks (TOUGH2, TOUGH3)"},
     {OutputFormat::Pflotran, "pflotran", kPflotran, Stage::Cells, true,
      "PFLOTRAN's explicit unstructured grid, a cell list per material, boundary connections per patch"},
+    {OutputFormat::Exodus, "exodus", kExodus, Stage::Cells, true,
+     "Exodus II: a polyhedral block per material, side sets per boundary patch and interface, the seeds as cell "
+     "variables (ParaView, SEACAS codes)"},
     {OutputFormat::Seeds, "seeds", kSeeds, Stage::Surface, false,
      "the seeds with label, radius and kind: the whole mesh in compact form"},
     {OutputFormat::SurfaceObj, "obj", kObj, Stage::Surface, false,

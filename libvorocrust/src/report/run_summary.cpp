@@ -102,6 +102,7 @@ std::vector<std::string> written_lines(const std::filesystem::path& folder, cons
         lines.push_back("wrote " + where + "/ (mesh.uge for GRID TYPE UNSTRUCTURED_EXPLICIT, a region file per material "
                         "and per boundary patch)");
         break;
+      case OutputFormat::Exodus: lines.push_back("wrote " + where + " (Exodus II: a block per material; ParaView reads it)"); break;
       default: break;
     }
   }
