@@ -12,6 +12,7 @@
 
 #include "cells/cell_faces.hpp"
 #include "cells/growing_cells.hpp"
+#include "geometry/measure_cells.hpp"
 #include "geometry/polygon_measures.hpp"
 #include "cells/voronoi_cells.hpp"
 #include "cells/weld_vertices.hpp"
@@ -203,25 +204,6 @@ void renumber_points(VoronoiMesh& mesh) {
     }
   }
   mesh.points = std::move(points);
-}
-
-// Volume and centroid of every cell, from its faces fanned about their vertex means: the same
-// triangles on both sides of a face, so the volumes add up to the volume the boundary encloses.
-void measure_cells(VoronoiMesh& mesh) {
-  tbb::parallel_for(std::size_t{0}, mesh.cells.size(), [&](std::size_t c) {
-    VoronoiCell& cell = mesh.cells[c];
-    const Point apex = mesh.points[mesh.faces[cell.faces.front()].points.front()];
-    double volume = 0;
-    Point moment = Point::Zero();
-    for (Index id : cell.faces) {
-      const VoronoiFace& face = mesh.faces[id];
-      geometry::add_cone(
-          apex, face.points.size(), [&](std::size_t k) -> const Point& { return mesh.points[face.points[k]]; },
-          face.owner == static_cast<std::int32_t>(c), volume, moment);
-    }
-    cell.volume = volume;
-    cell.centroid = moment / volume;
-  });
 }
 
 }  // namespace
@@ -609,7 +591,7 @@ VoronoiMesh GrowingCells::assemble(Cell&& cell) const {
       mend(failed, attempt);
     }
     renumber_points(mesh);
-    measure_cells(mesh);
+    geometry::measure_cells(mesh);
   });
   return mesh;
 }

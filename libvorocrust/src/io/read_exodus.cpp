@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polygon_measures.hpp"
+#include "geometry/measure_cells.hpp"
 #include "io/exodus_file.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/exodus.hpp"
@@ -91,23 +91,6 @@ std::map<std::string, std::vector<double>> cell_variables(const ExodusFile& file
     }
   }
   return out;
-}
-
-void measure_cells(VoronoiMesh& mesh) {
-  for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
-    VoronoiCell& cell = mesh.cells[c];
-    double volume = 0;
-    Point moment = Point::Zero();
-    const Point apex = cell.faces.empty() ? Point::Zero() : mesh.points[mesh.faces[cell.faces[0]].points[0]];
-    for (Index f : cell.faces) {
-      const VoronoiFace& face = mesh.faces[f];
-      geometry::add_cone(
-          apex, face.points.size(), [&](std::size_t k) -> const Point& { return mesh.points[face.points[k]]; },
-          face.owner == static_cast<std::int32_t>(c), volume, moment);
-    }
-    cell.volume = volume;
-    cell.centroid = volume != 0 ? Point(moment / volume) : apex;
-  }
 }
 
 }  // namespace
@@ -254,7 +237,10 @@ VoronoiMesh read_exodus(const std::filesystem::path& path) {
                                                       : "material" + std::to_string(label);
       }
     }
-    measure_cells(mesh);
+    for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
+      if (mesh.cells[c].faces.empty()) fail("element " + std::to_string(c + 1) + " has no face");
+    }
+    geometry::measure_cells(mesh);
     return mesh;
   } catch (const std::out_of_range&) {
     fail("the file has no face block");
