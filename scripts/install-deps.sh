@@ -13,12 +13,14 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   # the Exodus II output
   libexodusii-dev
-  # ParaView's readers in the tests (pvpython)
-  paraview
+  # ParaView's readers in the tests: pvpython comes with python3-paraview, whose VTK modules also
+  # serve the tests' `import vtk` (Debian lets it replace python3-vtk9, which it conflicts with)
+  paraview python3-paraview
   # tests and benchmarks (the CLI tests run under Debian's own python3)
   libgtest-dev libgmock-dev libbenchmark-dev python3
-  # the cells' exports checked by the real readers: VTK's Python module and OpenFOAM's checkMesh
-  python3-vtk9 openfoam
+  # the cells' exports checked by the real readers: VTK's Python module (above) and OpenFOAM's
+  # checkMesh
+  openfoam
   # the tests' independent region volumes (a voxel flood fill)
   python3-scipy
   # a decimal-comma locale (de_DE, compiled by localedef) in which the files must not change

@@ -6,7 +6,7 @@ import re
 import shutil
 import subprocess
 
-import vtk  # python3-vtk9
+import vtk  # VTK's Python modules, from python3-paraview
 
 from vtk_volume import vtk_boundary_volume  # noqa: F401  (one import for the tests)
 

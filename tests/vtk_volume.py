@@ -1,5 +1,5 @@
 """Volumes of a VTK unstructured grid as VTK itself measures them, shared by the Python tests."""
-import vtk  # python3-vtk9
+import vtk  # VTK's Python modules, from python3-paraview
 
 
 def vtk_boundary_volume(grid):

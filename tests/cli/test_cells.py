@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""`vorocrust cells` checked by the real tools: VTK's own reader (python3-vtk9) on mesh.vtu and
+"""`vorocrust cells` checked by the real tools: VTK's own reader (VTK's Python modules, from python3-paraview) on mesh.vtu and
 OpenFOAM's checkMesh on case/; rebuilding from a run's seeds.csv; the cell quality in report.json
 and quality.svg; bad seed files.
 

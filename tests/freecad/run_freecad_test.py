@@ -9,7 +9,7 @@
 Either way HOME is WORK/home and TMPDIR WORK/tmp, so FreeCAD's configuration, caches and
 temporary files stay out of the real home and /tmp.
 The script inside FreeCAD exits non-zero on any failure and leaves a JSON summary; this driver
-then reads the written mesh.vtu with VTK's own reader (python3-vtk9) and checks its cells and
+then reads the written mesh.vtu with VTK's own reader (VTK's Python modules, from python3-paraview) and checks its cells and
 volumes against the summary.
 
 Run by CTest as: python3 run_freecad_test.py MODE SOURCE_DIR BUILD_DIR WORK_DIR CMAKE FREECAD [XVFB_RUN]

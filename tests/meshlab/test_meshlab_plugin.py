@@ -420,7 +420,7 @@ class MeshLabCase(unittest.TestCase):
     def check_vtu(self, folder):
         """VTK reads mesh.vtu; its cells' volumes per material are the regions' volumes inside the
         output surface, and VTK's volume inside its outer faces their sum. Returns the volumes."""
-        import vtk  # python3-vtk9; imported here so the cases without cells need no VTK
+        import vtk  # VTK's Python modules, from python3-paraview; imported here so the cases without cells need no VTK
         reader = vtk.vtkXMLUnstructuredGridReader()
         reader.SetFileName(os.path.join(folder, "mesh.vtu"))
         reader.Update()

@@ -15,13 +15,15 @@ import tempfile
 import unittest
 
 VOROCRUST, MODELS, MODULE = sys.argv[1:4]
+# Debian's pvpython comes with python3-paraview (scripts/install-deps.sh), not with paraview.
+PVPYTHON = shutil.which("pvpython")
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, MODULE)
 import vorocrust  # noqa: E402
 
 # Models with several materials, and the materials' names as the input gives them.
 MODELS_TRIED = ["sandia_non_manifold_box.obj", "sandia_cube_test_02.obj", "openmeeg_HeadNNc3.obj"]
-# VTK 9.1 measures some polyhedra short (vtkPolyhedron's volume; 8 % of the non-manifold box's
+# ParaView 5.11's VTK measures some polyhedra short (vtkPolyhedron's volume; 8 % of the non-manifold box's
 # cells, by up to 6 %, for the same cells in all three files): ParaView's own measure is held to
 # this, the volumes the files carry to round-off.
 MEASURE_TOLERANCE = 2e-3
@@ -40,8 +42,9 @@ class ParaViewReadsEveryFormat(unittest.TestCase):
                         "--formats", "vtu,openfoam,exodus"], check=True)
         with open(os.path.join(out, "report.json")) as f:
             report = json.load(f)
+        self.assertIsNotNone(PVPYTHON, "pvpython is missing: install python3-paraview (scripts/install-deps.sh)")
         env = dict(os.environ, DISPLAY="")
-        run = subprocess.run(["pvpython", "--force-offscreen-rendering", os.path.join(HERE, "read_in_paraview.py"), out],
+        run = subprocess.run([PVPYTHON, "--force-offscreen-rendering", os.path.join(HERE, "read_in_paraview.py"), out],
                              capture_output=True, text=True, env=env, timeout=600)
         self.assertEqual(run.returncode, 0, run.stderr[-2000:])
         read = json.loads(run.stdout.strip().splitlines()[-1])
