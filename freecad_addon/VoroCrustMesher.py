@@ -426,7 +426,7 @@ def export_result(obj, folder, formats):
         return write_results(result, folder, formats)
     seeds = vorocrust.read_seeds(obj.SeedsFile)
     surface = vorocrust.read_mesh(obj.SurfaceFile)
-    unavailable = [f for f in formats if f in ("balls", "svg", "report")]
+    unavailable = [f for f in formats if f in ("balls", "svg", "html", "report")]
     if unavailable:
         raise vorocrust.UsageError("%s: only the run itself has these; the document keeps its seeds and surface "
                                    "(run Voronoi mesh again for them)" % ", ".join(unavailable))

@@ -11,8 +11,10 @@ packages=(
   libeigen3-dev libnanoflann-dev voro++-dev libopenmesh-dev libtbb-dev
   # the command-line program
   libcli11-dev nlohmann-json3-dev
-  # the Exodus II output
-  libexodusii-dev
+  # the Exodus II output, and the PNG pictures of report.html (zlib's deflate and CRC)
+  libexodusii-dev zlib1g-dev
+  # report.html loaded in a real headless browser by its test
+  chromium
   # ParaView's readers in the tests: pvpython comes with python3-paraview, whose VTK modules also
   # serve the tests' `import vtk` (Debian lets it replace python3-vtk9, which it conflicts with)
   paraview python3-paraview

@@ -266,6 +266,33 @@ the same document as the CLI's OUTDIR/report.json; `summary` holds the lines the
             write_histogram_svg(p, "quality: " + (p.parent_path() / "surface.ply").string(), panels);
           },
           py::arg("path"), "Draws the quality histograms (quality.svg), atomically.")
+      .def(
+          "write_report_html",
+          [](const MeshRun& r, const py::object& path) {
+            if (!r.mesh().surface_quality) {
+              throw Error(Error::Kind::Usage, "the run stopped before the surface: there is nothing to show in report.html");
+            }
+            const std::filesystem::path p = to_path(path);
+            const ReportPage page = job_report_page(r.run->job, r.run->result);
+            py::gil_scoped_release release;
+            write_report_html(p, r.mesh(), page);
+          },
+          py::arg("path"),
+          "Writes report.html, atomically: the run's figures, quality tables and pictures in one page that "
+          "opens from disk in any browser.")
+      .def(
+          "cut_picture_png",
+          [](const MeshRun& r, int width, int height) {
+            std::string png;
+            {
+              py::gil_scoped_release release;
+              png = cut_picture_png(r.mesh(), width, height);
+            }
+            return py::bytes(png);
+          },
+          py::arg("width") = 720, py::arg("height") = 540,
+          "The cut through the cells that report.html shows, as PNG bytes (cells coloured by material). Raises "
+          "UsageError for a run without cells.")
       .def("__repr__", [](const MeshRun& r) {
         const MeshResult& m = r.mesh();
         return "<vorocrust.MeshResult to " + std::string(to_string(r.run->job.options.stop_after)) + ": " +

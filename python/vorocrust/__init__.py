@@ -125,7 +125,7 @@ VOLUME_FORMATS = tuple(name for name, _, _, volume, _ in _vorocrust._OUTPUT_TABL
 
 # The part of a run each format is written from.
 _FORMAT_PARTS = {"balls": "balls", "seeds": "seeds", "obj": "surface", "ply": "surface", "svg": "run",
-                 "report": "run", "vtu": "cells", "openfoam": "cells", "tough": "cells", "pflotran": "cells",
+                 "html": "run", "report": "run", "vtu": "cells", "openfoam": "cells", "tough": "cells", "pflotran": "cells",
                  "exodus": "cells"}
 
 
@@ -135,7 +135,7 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
     elsewhere (seeds read back from a seeds.csv, cells from compute_cells()).
 
     formats: names from OUTPUT_FORMATS, each needing its part: "balls" balls, "seeds" seeds,
-        "obj" and "ply" surface, "svg" and "report" run (a MeshResult), "vtu", "openfoam",
+        "obj" and "ply" surface, "svg", "html" and "report" run (a MeshResult), "vtu", "openfoam",
         "tough", "pflotran" and "exodus" cells. A format whose part is missing raises UsageError before anything is written.
 
     Every file is written atomically. Returns the paths written, in the order of `formats`.
@@ -155,6 +155,7 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
         "obj": lambda: write_surface(surface, _at(folder, "surface.obj")),
         "ply": lambda: write_surface(surface, _at(folder, "surface.ply")),
         "svg": lambda: run.write_quality_svg(_at(folder, "quality.svg")),
+        "html": lambda: run.write_report_html(_at(folder, "report.html")),
         "report": lambda: run.write_report(_at(folder, "report.json")),
         "vtu": lambda: write_vtu(cells, _at(folder, "mesh.vtu")),
         "openfoam": lambda: write_openfoam(cells, _at(folder, "case")),
@@ -183,7 +184,7 @@ def _write_balls(folder, balls, run):
 def write_outputs(result, folder, formats=None, cells=None):
     """Writes a run's results into `folder` (created when missing), as `vorocrust mesh` does.
 
-    formats: names from OUTPUT_FORMATS ("balls", "seeds", "obj", "ply", "svg", "report",
+    formats: names from OUTPUT_FORMATS ("balls", "seeds", "obj", "ply", "svg", "html", "report",
         "vtu", "openfoam", "tough", "pflotran", "exodus"); None for every one the run has the parts for. Asking for a part the
         run did not make (cells after stop_after="surface") raises UsageError and writes
         nothing.

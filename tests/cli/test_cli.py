@@ -170,7 +170,7 @@ class Mesh(unittest.TestCase):
             self.assertEqual([t["phase"] for t in report["timings"]][:2], ["reading", "validating"])
             self.assertEqual(sorted(os.listdir(out)),
                              ["MESH", "balls.csv", "balls.vtk", "case", "mesh.exo", "mesh.vtu", "pflotran", "quality.svg",
-                              "report.json", "seeds.csv", "surface.obj", "surface.ply"])
+                              "report.html", "report.json", "seeds.csv", "surface.obj", "surface.ply"])
             self.assertEqual(report["features"]["corners"], 12)
             self.assertEqual(report["refinement"]["balls"]["corner"], 12)
             self.assertEqual(report["slivers"]["half_covered_left"], 0)

@@ -30,6 +30,7 @@ PUBLIC = {
     "face_orthogonality.hpp": "quality", "face_skewness.hpp": "quality", "write_vtu.hpp": "export",
     "write_openfoam.hpp": "export", "write_tough.hpp": "export", "write_pflotran.hpp": "export",
     "write_volume_mesh.hpp": "export", "quality_svg.hpp": "report", "report.hpp": "report",
+    "report_html.hpp": "report",
     "mesh_result.hpp": "mesher", "mesher.hpp": "mesher", "job.hpp": "mesher", "vorocrust.hpp": "mesher",
 }
 

@@ -64,8 +64,9 @@ class FilesInADecimalCommaLocale(unittest.TestCase):
         files = []
         for root, _, names in os.walk(self.cli_out):
             files += [os.path.relpath(os.path.join(root, n), self.cli_out) for n in names]
-        # report.json holds timings and the command line, quality.svg the output path in its title.
-        compared = sorted(f for f in files if f not in ("report.json", "quality.svg"))
+        # report.json and report.html hold timings, report.json the command line, quality.svg the
+        # output path in its title.
+        compared = sorted(f for f in files if f not in ("report.json", "report.html", "quality.svg"))
         for name in ("seeds.csv", "balls.csv", "balls.vtk", "surface.obj", "surface.ply", "mesh.vtu", "MESH",
                      "case/constant/polyMesh/points", "pflotran/mesh.uge"):
             self.assertIn(name, compared)

@@ -145,7 +145,7 @@ class Module(unittest.TestCase):
         written = vorocrust.write_outputs(self.result, out)
         self.assertEqual(sorted(os.path.basename(p) for p in written),
                          sorted(["balls.csv", "balls.vtk", "report.json", "seeds.csv", "surface.obj", "surface.ply",
-                                 "quality.svg"]))
+                                 "quality.svg", "report.html"]))
         for name in ("balls.csv", "balls.vtk", "seeds.csv", "surface.obj", "surface.ply"):
             self.assertEqual(read_bytes(os.path.join(out, name)), read_bytes(os.path.join(self.cli_out, name)), name)
         with open(os.path.join(self.cli_out, "report.json")) as f:

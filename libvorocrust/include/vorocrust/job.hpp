@@ -36,6 +36,7 @@
 #include "vorocrust/mesh_result.hpp"
 #include "vorocrust/options.hpp"
 #include "vorocrust/progress.hpp"
+#include "vorocrust/report_html.hpp"
 #include "vorocrust/stats.hpp"
 #include "vorocrust/surface_mesh.hpp"
 #include "vorocrust/validate.hpp"
@@ -67,5 +68,9 @@ VOROCRUST_API JobResult run_job(const Job& job, const ProgressCallback& progress
 
 // report.json of a finished job, as run_job writes it (the Python module's report()).
 VOROCRUST_API std::string job_report_json(const Job& job, const JobResult& result, int indent = 2);
+
+// What report.html of a job shows besides its result: the inputs' names as title, the summary
+// lines, the warnings and the timings (the job's, or the pipeline's while the job runs).
+VOROCRUST_API ReportPage job_report_page(const Job& job, const JobResult& result);
 
 }  // namespace vorocrust

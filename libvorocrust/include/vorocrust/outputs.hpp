@@ -28,6 +28,7 @@ enum class OutputFormat {
   SurfacePly,  // surface.ply
   Balls,       // balls.csv, balls.vtk, and smoothed_surface.ply when smoothing changed the input
   QualitySvg,  // quality.svg: the histograms
+  ReportHtml,  // report.html: the run's figures, tables and pictures, for a browser
 };
 
 struct VOROCRUST_API OutputFormatSpec {
@@ -41,8 +42,9 @@ struct VOROCRUST_API OutputFormatSpec {
 
 template <>
 struct ChoiceNames<OutputFormat> {
-  static constexpr std::array<std::string_view, 10> names = {"vtu", "openfoam", "tough", "pflotran", "exodus",
-                                                               "seeds", "obj", "ply", "balls", "svg"};
+  static constexpr std::array<std::string_view, 11> names = {"vtu",  "openfoam", "tough", "pflotran",
+                                                               "exodus", "seeds", "obj", "ply",
+                                                               "balls", "svg", "html"};
 };
 
 VOROCRUST_API std::span<const OutputFormatSpec> output_formats() noexcept;

@@ -24,6 +24,7 @@
 #include "vorocrust/regions.hpp"
 #include "vorocrust/resolve_self_intersections.hpp"
 #include "vorocrust/report.hpp"
+#include "vorocrust/report_html.hpp"
 #include "vorocrust/surface_from_arrays.hpp"
 #include "vorocrust/surface_mesh.hpp"
 #include "vorocrust/threads.hpp"

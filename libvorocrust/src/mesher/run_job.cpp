@@ -132,7 +132,8 @@ class Staging {
 
 // Writes the formats of `options.formats` that `result` reached into `staged`; the files name
 // `out`, where they will be (quality.svg's title).
-void write_outputs(const MeshResult& result, const MeshOptions& options, const fs::path& staged, const fs::path& out) {
+void write_outputs(const MeshResult& result, const MeshOptions& options, const ReportPage& page, const fs::path& staged,
+                   const fs::path& out) {
   const auto wanted = [&](OutputFormat f) {
     return options.writes(f) && options.stop_after >= output_format(f).needs;
   };
@@ -154,6 +155,7 @@ void write_outputs(const MeshResult& result, const MeshOptions& options, const f
     if (result.cell_quality) panels.push_back(cell_quality_panel(*result.cell_quality));
     write_histogram_svg(staged / "quality.svg", "quality: " + (out / "surface.ply").string(), panels);
   }
+  if (wanted(OutputFormat::ReportHtml)) write_report_html(staged / "report.html", result, page);
 }
 
 // Every file name an output format may leave in a folder.
@@ -249,7 +251,7 @@ JobResult run_job(const Job& job, const ProgressCallback& progress, const Warnin
       phases.begin_own("writing");
       make_folder(job.output_dir);
       Staging staging(job.output_dir);
-      write_outputs(result.mesh, options, staging.path(), job.output_dir);
+      write_outputs(result.mesh, options, job_report_page(job, result), staging.path(), job.output_dir);
       result.written = staging.commit(output_file_names());
       std::vector<OutputFormat> reached;
       for (OutputFormat f : options.formats) {
@@ -276,6 +278,16 @@ JobResult run_job(const Job& job, const ProgressCallback& progress, const Warnin
     }
     throw;
   }
+}
+
+ReportPage job_report_page(const Job& job, const JobResult& result) {
+  ReportPage page;
+  for (const fs::path& input : job.inputs) page.title += (page.title.empty() ? "" : ", ") + input.filename().string();
+  if (page.title.empty()) page.title = "a model";
+  page.summary = result.summary;
+  page.warnings = result.warnings;
+  page.timings = result.timings.empty() ? result.mesh.timings : result.timings;
+  return page;
 }
 
 std::string job_report_json(const Job& job, const JobResult& result, int indent) {

@@ -17,9 +17,10 @@ constexpr std::array<std::string_view, 1> kObj = {"surface.obj"};
 constexpr std::array<std::string_view, 1> kPly = {"surface.ply"};
 constexpr std::array<std::string_view, 3> kBalls = {"balls.csv", "balls.vtk", "smoothed_surface.ply"};
 constexpr std::array<std::string_view, 1> kSvg = {"quality.svg"};
+constexpr std::array<std::string_view, 1> kHtml = {"report.html"};
 
 // In the order of OutputFormat, and of ChoiceNames<OutputFormat>.
-const std::array<OutputFormatSpec, 10> kOutputs = {{
+const std::array<OutputFormatSpec, 11> kOutputs = {{
     {OutputFormat::Vtu, "vtu", kVtu, Stage::Cells, true,
      "one VTK polyhedron per cell with its material, seed, volume and aspect ratio (ParaView)"},
     {OutputFormat::OpenFoam, "openfoam", kCase, Stage::Cells, true,
@@ -39,6 +40,9 @@ const std::array<OutputFormatSpec, 10> kOutputs = {{
     {OutputFormat::Balls, "balls", kBalls, Stage::Balls, false,
      "the protecting balls, and the smoothed input they cover when smoothing changed it"},
     {OutputFormat::QualitySvg, "svg", kSvg, Stage::Surface, false, "the histograms of triangle and cell quality"},
+    {OutputFormat::ReportHtml, "html", kHtml, Stage::Surface, false,
+     "a page to open in a browser: the run's figures and quality tables, pictures of the surface, of a cut "
+     "through the cells and of the worst cells, and the histograms"},
 }};
 
 }  // namespace

@@ -1,11 +1,11 @@
 // Histograms as SVG: plain shapes and text, no script or style sheet, so any viewer shows them.
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <locale>
 #include <numeric>
 #include <sstream>
 
+#include "report/markup.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/cell_quality.hpp"
@@ -20,29 +20,9 @@ namespace {
 constexpr double kWidth = 720, kTitleHeight = 40, kPanelHeight = 280;
 constexpr double kLeft = 70, kRight = 24, kTop = 56, kBottom = 48;  // plot margins inside a panel
 
-// std::to_chars ignores the locale, unlike printf and streams: a host application running in a
-// locale with decimal commas still gets valid SVG.
-std::string number(double x, std::chars_format format, int precision) {
-  char buffer[64];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x, format, precision).ptr;
-  return std::string(buffer, end);
-}
-std::string coordinate(double x) { return number(x, std::chars_format::fixed, 1); }
-std::string value(double x) { return number(x, std::chars_format::general, 4); }
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string coordinate(double x) { return report::locale_free_number(x, std::chars_format::fixed, 1); }
+std::string value(double x) { return report::locale_free_number(x, std::chars_format::general, 4); }
+std::string escaped(const std::string& text) { return report::escape_markup(text); }
 
 // The smallest of 1, 2, 5 times a power of ten that is at least x (x > 0).
 double nice_step(double x) {
