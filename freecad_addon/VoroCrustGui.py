@@ -3,11 +3,15 @@
 "Voronoi mesh" meshes the selected Mesh objects and Part solids: a task panel takes the
 parameters (remembered in FreeCAD's preferences, under Mod/VoroCrust), runs the mesher in a
 worker thread while a progress bar follows it, and its Cancel stops the run (nothing is written
-then). "Export Voronoi mesh" writes the files of a selected result again. Errors go to FreeCAD's
+then). When a run has cells, a window shows a cut through them (the picture report.html opens
+with) and opens the result in ParaView when it is installed, or report.html in the browser.
+"Export Voronoi mesh" writes the files of a selected result again. Errors go to FreeCAD's
 report view and the panel, never to a crash. The work itself is VoroCrustMesher's.
 """
 
 import os
+import shutil
+import subprocess
 import threading
 
 import FreeCAD as App
@@ -26,7 +30,8 @@ _panels = {}
 
 
 def active_panel(kind="mesh"):
-    """The Voronoi mesh ("mesh") or export ("export") panel opened last, or None."""
+    """The Voronoi mesh ("mesh") or export ("export") panel or the result window ("result") opened
+    last, or None."""
     return _panels.get(kind)
 
 
@@ -320,6 +325,8 @@ class VoronoiMeshPanel:
         self.progress.setValue(100)
         self.status.setText("Done: %s" % self.result_object.Label)
         Gui.Control.closeDialog()
+        if self._state["result"].stop_after == "cells":
+            ResultWindow(self.result_object, self._state["result"], self._state["result"].written).show()
 
     def _failed(self, error):
         report_error(error)
@@ -329,6 +336,60 @@ class VoronoiMeshPanel:
         for widget in self._inputs:
             widget.setEnabled(enabled)
         self.cvt_iterations.setEnabled(enabled and self.interior.currentText() == "cvt")
+
+
+class ResultWindow:
+    """A finished run at a glance: the cut through its cells coloured by material, with buttons
+    that open its files in ParaView (when installed) and report.html in the web browser."""
+
+    def __init__(self, obj, result, written):
+        self.written = [os.fspath(p) for p in written]
+        self.dialog = QtGui.QDialog(Gui.getMainWindow())
+        self.dialog.setWindowTitle("VoroCrust: " + obj.Label)
+        layout = QtGui.QVBoxLayout(self.dialog)
+        pixmap = QtGui.QPixmap()
+        pixmap.loadFromData(QtCore.QByteArray(result.cut_picture_png()), "PNG")
+        self.picture = QtGui.QLabel()
+        self.picture.setPixmap(pixmap)
+        layout.addWidget(self.picture)
+        caption = QtGui.QLabel("%d cells, cut across the mesh's thinnest extent; each colour a material. "
+                               "%s" % (obj.CellCount, " ".join(result.summary[:1])))
+        caption.setWordWrap(True)
+        layout.addWidget(caption)
+        buttons = QtGui.QDialogButtonBox(QtGui.QDialogButtonBox.Close)
+        self.paraview_button = buttons.addButton("Open in ParaView", QtGui.QDialogButtonBox.ActionRole)
+        self.paraview_button.setEnabled(self.paraview_command() is not None)
+        if self.paraview_command() is None:
+            self.paraview_button.setToolTip("needs ParaView (`paraview` on the PATH) and mesh.vtu or mesh.exo")
+        self.paraview_button.clicked.connect(self.open_paraview)
+        self.report_button = buttons.addButton("Open report", QtGui.QDialogButtonBox.ActionRole)
+        self.report_button.setEnabled(self._written("report.html") is not None)
+        self.report_button.clicked.connect(self.open_report)
+        buttons.rejected.connect(self.dialog.close)
+        layout.addWidget(buttons)
+        _panels["result"] = self
+
+    def _written(self, name):
+        return next((p for p in self.written if os.path.basename(p) == name), None)
+
+    def paraview_command(self):
+        """The command that opens the result in ParaView, or None without ParaView or a file it reads."""
+        paraview = shutil.which("paraview")
+        mesh = self._written("mesh.vtu") or self._written("mesh.exo")
+        return [paraview, mesh] if paraview and mesh else None
+
+    def open_paraview(self):
+        command = self.paraview_command()
+        if command:
+            subprocess.Popen(command, start_new_session=True)
+
+    def open_report(self):
+        path = self._written("report.html")
+        if path:
+            QtGui.QDesktopServices.openUrl(QtCore.QUrl.fromLocalFile(path))
+
+    def show(self):
+        self.dialog.show()
 
 
 class ExportPanel:

@@ -9,6 +9,7 @@ and VOROCRUST_TEST_SUMMARY set. Exits FreeCAD with 0 when every check holds, 1 o
 
 import json
 import os
+import shutil
 import sys
 import time
 import traceback
@@ -147,6 +148,21 @@ def main():
         check(os.path.isfile(os.path.join(out, name)), "%s not written" % name)
     check(not os.path.exists(os.path.join(out, "surface.obj")), "a format not asked for was written")
     check(result.ViewObject.Proxy.getIcon().endswith("VoronoiMeshResult.svg"), "result icon")
+
+    # The result window: the cut through the cells, ParaView offered when it is installed.
+    window = VoroCrustGui.active_panel("result")
+    check(window is not None and window.dialog.isVisible(), "no result window after the run")
+    image = window.picture.pixmap().toImage()
+    check((image.width(), image.height()) == (720, 540), "cut picture %dx%d" % (image.width(), image.height()))
+    drawn = sum(1 for x in range(0, 720, 8) for y in range(0, 540, 8) if image.pixel(x, y) & 0xFFFFFF != 0xFFFFFF)
+    check(drawn > 0.1 * 90 * 68, "the cut picture is nearly empty: %d of %d samples drawn" % (drawn, 90 * 68))
+    paraview = shutil.which("paraview")
+    check(window.paraview_button.isEnabled() == (paraview is not None), "ParaView button enabled with paraview %r" % paraview)
+    if paraview:
+        check(window.paraview_command() == [paraview, os.path.join(out, "mesh.vtu")],
+              "ParaView command %r" % window.paraview_command())
+    window.dialog.close()
+    summary["cut_picture_drawn_samples"] = drawn
 
     # Export the finished result again.
     export = os.path.join(WORK, "export")
