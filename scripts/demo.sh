@@ -19,9 +19,11 @@ echo
 echo "== build/cli/vorocrust quality demo-output"
 build/cli/vorocrust quality demo-output
 echo
+echo "Open demo-output/report.html in a browser: the run's figures, tables and pictures on one page."
 echo "The Voronoi mesh is in demo-output/mesh.vtu (open it in ParaView; cell data: material, seed,"
 echo "volume, aspect_ratio: a Threshold on it shows the worst cells) and demo-output/case/ (an"
-echo "OpenFOAM case: checkMesh -case demo-output/case)."
+echo "OpenFOAM case: checkMesh -case demo-output/case), and mesh.exo (Exodus II), MESH (TOUGH) and"
+echo "pflotran/ (PFLOTRAN)."
 echo "The surface is in demo-output/surface.obj and surface.ply (ParaView, MeshLab), its quality"
 echo "histogram in demo-output/quality.svg, the seeds in seeds.csv; the protecting balls in balls.csv"
 echo "and balls.vtk (in ParaView glyph the points as spheres scaled by 'radius'); report.json holds"

@@ -58,6 +58,19 @@ class OptionTable(unittest.TestCase):
                 if o["kind"] != "flag":
                     self.assertIn("range: " + o["range_text"], text)
 
+    def test_the_readmes_list_of_options_is_what_the_program_prints(self):
+        # The README shows `vorocrust options` as a block; it must not fall behind the table.
+        readme = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "README.md")
+        with open(readme) as f:
+            blocks = re.findall(r"```\n(--lipschitz .*?)```", f.read(), re.S)
+        self.assertEqual(len(blocks), 1, "the README's block of options (starting with --lipschitz)")
+        printed = cli("options").stdout
+        if blocks[0].strip() != printed.strip():
+            import difflib
+            self.fail("README.md's options differ from `vorocrust options`:\n" + "\n".join(
+                difflib.unified_diff(blocks[0].strip().splitlines(), printed.strip().splitlines(), "README.md",
+                                     "vorocrust options", lineterm="")))
+
     def test_every_option_a_keyword_of_mesh_with_its_default(self):
         signature = inspect.signature(vorocrust.mesh).parameters
         doc = vorocrust.mesh.__doc__
