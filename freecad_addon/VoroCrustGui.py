@@ -326,7 +326,10 @@ class VoronoiMeshPanel:
         self.status.setText("Done: %s" % self.result_object.Label)
         Gui.Control.closeDialog()
         if self._state["result"].stop_after == "cells":
-            ResultWindow(self.result_object, self._state["result"], self._state["result"].written).show()
+            try:
+                ResultWindow(self.result_object, self._state["result"], self._state["result"].written).show()
+            except Exception as e:  # the result is in the document and on disk: say so, go on
+                report_error(e)
 
     def _failed(self, error):
         report_error(error)
@@ -343,7 +346,7 @@ class ResultWindow:
     that open its files in ParaView (when installed) and report.html in the web browser."""
 
     def __init__(self, obj, result, written):
-        self.written = [os.fspath(p) for p in written]
+        self.written = [os.path.abspath(os.fspath(p)) for p in written]
         self.dialog = QtGui.QDialog(Gui.getMainWindow())
         self.dialog.setWindowTitle("VoroCrust: " + obj.Label)
         layout = QtGui.QVBoxLayout(self.dialog)

@@ -29,8 +29,9 @@ import vorocrust
 #: What the panel and voronoi_mesh() can write, by format name: the module's formats, so
 #: formats the library gains appear here by themselves. report.json is always written.
 FORMATS = dict(vorocrust.OUTPUT_FORMATS)
-#: Written when nothing else is asked for: the volume mesh and the compact seeds.
-DEFAULT_FORMATS = ("vtu", "openfoam", "tough", "pflotran", "seeds", "ply")
+#: Written when nothing else is asked for: the volume mesh, the compact seeds, the surface and
+#: report.html (the result window's "Open report").
+DEFAULT_FORMATS = ("vtu", "openfoam", "tough", "pflotran", "seeds", "ply", "html")
 #: The options of a run: the library's table (vorocrust.OPTIONS), in its order, as the workbench
 #: offers them; the panel, the object's properties and Parameters are made from it.
 OPTIONS = [o for o in vorocrust.OPTIONS if "freecad" in o["front_ends"]]

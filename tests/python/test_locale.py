@@ -14,6 +14,7 @@ import filecmp
 import json
 import locale
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -73,6 +74,13 @@ class FilesInADecimalCommaLocale(unittest.TestCase):
         for name in compared:
             self.assertTrue(filecmp.cmp(os.path.join(self.cli_out, name), os.path.join(out, name), shallow=False),
                             name + " differs between the program in C and the module in de_DE")
+        # report.html: the same page but for the timings (the program's and the module's differ).
+        def page(folder):
+            with open(os.path.join(folder, "report.html")) as f:
+                return re.sub(r'<table id="timings">.*?</table>', "", f.read(), flags=re.S)
+
+        self.assertIn("report.html", files)
+        self.assertEqual(page(self.cli_out), page(out), "report.html differs between C and de_DE")
         with open(os.path.join(out, "seeds.csv")) as f:
             self.assertEqual(f.readline().strip().split(","), ["x", "y", "z", "label", "radius", "kind"])
             self.assertTrue(all(len(line.split(",")) == 6 for line in f), "a seeds.csv line has a decimal comma")

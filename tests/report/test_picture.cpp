@@ -51,6 +51,10 @@ TEST(Picture, LinesShowOverTheirFacesAndAreClipped) {
   picture.draw_line(Point(-1e12, 5.5, 0), Point(1e12, 5.5, 0), kBlue);
   EXPECT_EQ(picture.pixel(0, 5), kBlue);
   EXPECT_EQ(picture.pixel(9, 5), kBlue);
+  // A triangle far larger than the picture still fills it (no int overflow on its corners).
+  Picture big(10, 10, kWhite);
+  big.draw_triangle({Point(-3e9, -3e9, 0), Point(3e9, -3e9, 0), Point(0, 3e9, 0)}, kBlue);
+  EXPECT_EQ(big.pixel(5, 5), kBlue);
   // Degenerate and non-finite input draws nothing and does not throw.
   picture.draw_triangle({Point(1, 1, 0), Point(2, 2, 0), Point(3, 3, 0)}, kBlue);
   picture.draw_line(Point(0, 0, 0), Point(std::nan(""), 1, 0), kBlue);
@@ -99,6 +103,7 @@ TEST(Markup, EscapesAndNumbersAreSafeInAnyLocale) {
   EXPECT_EQ(escape_markup("a<b & \"c\">"), "a&lt;b &amp; &quot;c&quot;&gt;");
   EXPECT_EQ(locale_free_number(0.5, std::chars_format::fixed, 2), "0.50");
   EXPECT_EQ(locale_free_number(12345.678, std::chars_format::general, 4), "1.235e+04");
+  EXPECT_EQ(locale_free_number(1e100, std::chars_format::fixed, 3), "1e+100");
 }
 
 TEST(Picture, RegionColoursDifferAndOutsideIsGrey) {

@@ -1,8 +1,9 @@
 #include "vorocrust/surface_mesh.hpp"
 
-#include <cstdio>
 #include <filesystem>
 #include <utility>
+
+#include "core/c_format.hpp"
 
 namespace vorocrust {
 
@@ -18,11 +19,7 @@ void SurfaceMesh::flip(std::size_t face) {
   if (!face_regions.empty()) std::swap(face_regions[face].back, face_regions[face].front);
 }
 
-std::string describe_point(const Point& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.9g, %.9g, %.9g)", p.x(), p.y(), p.z());
-  return text;
-}
+std::string describe_point(const Point& p) { return c_format("(%.9g, %.9g, %.9g)", p.x(), p.y(), p.z()); }
 
 std::string describe_face(const SurfaceMesh& mesh, std::size_t face) {
   std::string text = "face " + std::to_string(face);

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <deque>
 
+#include "core/c_format.hpp"
 #include "core/edge_topology.hpp"
 #include "core/surface_measures.hpp"
 #include "geometry/predicates.hpp"
@@ -212,11 +213,7 @@ const Finding* ValidationReport::find(const std::string& code) const {
   return nullptr;
 }
 
-std::string number_text(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
+std::string number_text(double x) { return c_format("%.3g", x); }
 
 // Faces folded over all their neighbours, unfolded where moving their vertices does it.
 void fix_folds(SurfaceMesh& mesh, const ValidationOptions& options, ValidationReport& report) {

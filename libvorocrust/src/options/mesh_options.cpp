@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iterator>
 
+#include "core/c_format.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/options.hpp"
 
@@ -326,9 +327,7 @@ const std::array<OptionSpec, 18> kSpecs = {{
 
 std::string number_text(double x) {
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.10g", x);
-  return text;
+  return c_format("%.10g", x);
 }
 
 bool in_range(const OptionSpec& spec, double x) {

@@ -5,7 +5,9 @@ namespace vorocrust::report {
 
 std::string locale_free_number(double x, std::chars_format format, int precision) {
   char buffer[64];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x, format, precision).ptr;
+  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x, format, precision);
+  // Only a fixed-point number beyond 1e60 or so fails to fit: written in general format instead.
+  if (error != std::errc{}) return locale_free_number(x, std::chars_format::general, precision);
   return std::string(buffer, end);
 }
 

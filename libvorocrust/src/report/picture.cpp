@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "vorocrust/error.hpp"
 
@@ -69,11 +70,17 @@ void Picture::draw_triangle(const std::array<Point, 3>& c, Rgb colour) {
     return (b.x() - a.x()) * (y - a.y()) - (b.y() - a.y()) * (x - a.x());
   };
   const double area = edge(c[0], c[1], c[2].x(), c[2].y());
-  if (!(std::abs(area) > 1e-12)) return;  // edge-on, or not finite
+  if (!(std::abs(area) > 1e-12) || !std::isfinite(area)) return;  // edge-on, or not finite
   const double low_x = std::min({c[0].x(), c[1].x(), c[2].x()}), high_x = std::max({c[0].x(), c[1].x(), c[2].x()});
   const double low_y = std::min({c[0].y(), c[1].y(), c[2].y()}), high_y = std::max({c[0].y(), c[1].y(), c[2].y()});
-  const int x0 = std::max(0, static_cast<int>(std::floor(low_x))), x1 = std::min(width_ - 1, static_cast<int>(std::ceil(high_x)));
-  const int y0 = std::max(0, static_cast<int>(std::floor(low_y))), y1 = std::min(height_ - 1, static_cast<int>(std::ceil(high_y)));
+  if (high_x < 0 || high_y < 0 || low_x >= width_ || low_y >= height_) return;
+  // Clamped as doubles: a corner far outside the picture must not overflow an int.
+  const auto pixel_range = [](double low, double high, int size) {
+    return std::pair{static_cast<int>(std::clamp(std::floor(low), 0.0, size - 1.0)),
+                     static_cast<int>(std::clamp(std::ceil(high), 0.0, size - 1.0))};
+  };
+  const auto [x0, x1] = pixel_range(low_x, high_x, width_);
+  const auto [y0, y1] = pixel_range(low_y, high_y, height_);
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       const double px = x + 0.5, py = y + 0.5;

@@ -1,26 +1,14 @@
 // What a run says about itself, a line each: the same lines on the CLI's terminal, in MeshLab's
 // log, in FreeCAD's report view and in Python's MeshResult.summary.
 #include <algorithm>
-#include <cstdarg>
-#include <cstdio>
 
+#include "core/c_format.hpp"
 #include "vorocrust/face_skewness.hpp"
 #include "vorocrust/report.hpp"
 
 namespace vorocrust {
 
 namespace {
-
-std::string printed(const char* format, ...) __attribute__((format(printf, 1, 2)));
-
-std::string printed(const char* format, ...) {
-  char line[1024];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(line, sizeof line, format, args);
-  va_end(args);
-  return line;
-}
 
 std::size_t count_kind(const std::vector<Seed>& seeds, SeedKind kind) {
   return static_cast<std::size_t>(std::count_if(seeds.begin(), seeds.end(), [&](const Seed& s) { return s.kind == kind; }));
@@ -32,7 +20,7 @@ std::vector<std::string> run_warnings(const MeshResult& result) {
   std::vector<std::string> lines;
   const SelfIntersectionStats& s = result.self_intersections;
   if (s.faces_cut > 0) {
-    lines.push_back(printed("self-intersections resolved: %zu faces cut along their intersection curves (%zu new "
+    lines.push_back(c_format("self-intersections resolved: %zu faces cut along their intersection curves (%zu new "
                             "points), %zu faces left inside one region dropped, %zu faces in all",
                             s.faces_cut, s.points_added, s.faces_dropped, s.faces));
   }
@@ -45,13 +33,13 @@ std::vector<std::string> run_warnings(const MeshResult& result) {
     if (f.smoothing_rounds_crossing > 0) {
       why += "; " + std::to_string(f.smoothing_rounds_crossing) + " would carry the surface through itself";
     }
-    lines.push_back(printed("smoothing kept %d round(s)%s", f.smoothing_iterations, why.c_str()));
+    lines.push_back(c_format("smoothing kept %d round(s)%s", f.smoothing_iterations, why.c_str()));
   }
   return lines;
 }
 
 std::string face_figures_line(const CellQuality& q) {
-  return printed("faces orthogonal to their seed links within %.2g deg (face %zu); against the cell centroids, as "
+  return c_format("faces orthogonal to their seed links within %.2g deg (face %zu); against the cell centroids, as "
                  "checkMesh measures: non-orthogonality max %.3g deg, mean %.3g deg, skewness max %.3g, %zu faces "
                  "above %g",
                  q.max_link_angle, q.link_angle_face, q.max_non_orthogonality, q.mean_non_orthogonality,
@@ -62,29 +50,29 @@ std::vector<std::string> run_summary(const MeshResult& result, const MeshOptions
   std::vector<std::string> lines;
   const RefinementStats& r = result.refinement;
   const FeatureCounts& f = result.features;
-  lines.push_back(printed("%zu balls (%zu corner, %zu crease, %zu patch) protecting %zu corners, %zu creases and "
+  lines.push_back(c_format("%zu balls (%zu corner, %zu crease, %zu patch) protecting %zu corners, %zu creases and "
                           "%zu patches",
                           r.balls[0] + r.balls[1] + r.balls[2], r.balls[0], r.balls[1], r.balls[2], f.corners,
                           f.creases, f.patches));
   if (options.stop_after < Stage::Surface) return lines;
   const std::size_t splits = result.slivers.rounds_for(SliverIteration::Shrunk::ForSkinnyTriangles);
-  lines.push_back(printed("%zu surface seeds, a surface of %zu triangles after %zu rounds of sliver elimination%s",
+  lines.push_back(c_format("%zu surface seeds, a surface of %zu triangles after %zu rounds of sliver elimination%s",
                           count_kind(result.seeds, SeedKind::Surface), result.surface.num_faces(),
                           result.slivers.rounds_for(SliverIteration::Shrunk::ForSlivers),
                           splits > 0 ? (" and " + std::to_string(splits) + " of splitting skinny triangles").c_str() : ""));
   const SurfaceQuality& q = *result.surface_quality;
-  lines.push_back(printed("smallest angle %.1f deg, %.2f %% of angles below 30 deg, Q min %.3f, mean %.3f, Hausdorff "
+  lines.push_back(c_format("smallest angle %.1f deg, %.2f %% of angles below 30 deg, Q min %.3f, mean %.3f, Hausdorff "
                           "%.3f %% of the diagonal, topology %s",
                           q.min_angle_degrees, q.percent_angles_below_30, q.min_quality, q.mean_quality,
                           100 * q.hausdorff_relative, q.topology_matches ? "as the input's" : "DIFFERS from the input's"));
   if (options.stop_after < Stage::Cells) return lines;
   const InteriorStats& i = result.interior;
-  lines.push_back(printed("%zu interior and %zu outside seeds (%s); %zu cells, %zu faces (%zu between cells), volume "
+  lines.push_back(c_format("%zu interior and %zu outside seeds (%s); %zu cells, %zu faces (%zu between cells), volume "
                           "%.10g",
                           i.interior_seeds, i.outside_seeds, to_string(options.interior), result.cells.cells.size(),
                           result.cells.faces.size(), count_interior_faces(result.cells), total_volume(result.cells)));
   const CellQuality& c = *result.cell_quality;
-  lines.push_back(printed("cell aspect ratio %.3g mean, %.3g max (seed %u); %zu cells above %.3g", c.mean_aspect_ratio,
+  lines.push_back(c_format("cell aspect ratio %.3g mean, %.3g max (seed %u); %zu cells above %.3g", c.mean_aspect_ratio,
                           c.max_aspect_ratio, c.worst_seed, c.aspect_ratio_above_high, c.histogram_high));
   lines.push_back(face_figures_line(c));
   return lines;
