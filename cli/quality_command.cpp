@@ -144,9 +144,7 @@ int run_quality(const QualityArgs& args) {
   if (has_seeds) cell_quality = measure_cells(seeds, seed_count);
 
   const fs::path svg = out / "quality.svg";
-  std::vector<HistogramPanel> panels;
-  if (surface_quality) panels.push_back(surface_quality_panel(*surface_quality));
-  if (cell_quality) panels.push_back(cell_quality_panel(*cell_quality));
+  const std::vector<HistogramPanel> panels = quality_panels(surface_quality, cell_quality);
   const std::string title = !cell_quality      ? "surface quality: " + surface.string()
                             : !surface_quality ? "cell quality: " + seeds.string()
                                                : "surface and cell quality: " + out.string();

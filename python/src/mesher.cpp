@@ -260,8 +260,7 @@ the same document as the CLI's OUTDIR/report.json; `summary` holds the lines the
               throw Error(Error::Kind::Usage, "the run stopped before the surface: there is no surface quality to draw");
             }
             const std::filesystem::path p = to_path(path);
-            std::vector<HistogramPanel> panels = {surface_quality_panel(*r.mesh().surface_quality)};
-            if (r.mesh().cell_quality) panels.push_back(cell_quality_panel(*r.mesh().cell_quality));
+            const std::vector<HistogramPanel> panels = quality_panels(r.mesh().surface_quality, r.mesh().cell_quality);
             py::gil_scoped_release release;
             write_histogram_svg(p, "quality: " + (p.parent_path() / "surface.ply").string(), panels);
           },
@@ -269,9 +268,6 @@ the same document as the CLI's OUTDIR/report.json; `summary` holds the lines the
       .def(
           "write_report_html",
           [](const MeshRun& r, const py::object& path) {
-            if (!r.mesh().surface_quality) {
-              throw Error(Error::Kind::Usage, "the run stopped before the surface: there is nothing to show in report.html");
-            }
             const std::filesystem::path p = to_path(path);
             const ReportPage page = job_report_page(r.run->job, r.run->result);
             py::gil_scoped_release release;

@@ -17,6 +17,9 @@
 #include <string>
 #include <vector>
 
+#include "vorocrust/cell_quality.hpp"
+#include "vorocrust/quality.hpp"
+
 namespace vorocrust {
 
 struct VOROCRUST_API HistogramPanel {
@@ -27,13 +30,15 @@ struct VOROCRUST_API HistogramPanel {
   std::optional<std::size_t> above_high;  // values above `high`, when the bins do not reach them all
 };
 
-struct SurfaceQuality;
 // The triangle-quality panel of OUTDIR/quality.svg.
 VOROCRUST_API HistogramPanel surface_quality_panel(const SurfaceQuality& quality);
 
-struct CellQuality;
 // The cell aspect-ratio panel of OUTDIR/quality.svg, with the cells above its range as overflow.
 VOROCRUST_API HistogramPanel cell_quality_panel(const CellQuality& quality);
+
+// The panels of quality.svg: the surface's, then the cells', each where its quality is given.
+VOROCRUST_API std::vector<HistogramPanel> quality_panels(const std::optional<SurfaceQuality>& surface,
+                                                         const std::optional<CellQuality>& cells);
 
 // The picture as text. Throws Error(Usage) for a panel without bins or with high <= low.
 VOROCRUST_API std::string histogram_svg(const std::string& title, const std::vector<HistogramPanel>& panels);

@@ -151,9 +151,8 @@ void write_outputs(const MeshResult& result, const MeshOptions& options, const R
     if (f.volume && wanted(f.format)) write_volume_format(result.cells, staged, f.name, quality);
   }
   if (wanted(OutputFormat::QualitySvg)) {
-    std::vector<HistogramPanel> panels = {surface_quality_panel(*result.surface_quality)};
-    if (result.cell_quality) panels.push_back(cell_quality_panel(*result.cell_quality));
-    write_histogram_svg(staged / "quality.svg", "quality: " + (out / "surface.ply").string(), panels);
+    write_histogram_svg(staged / "quality.svg", "quality: " + (out / "surface.ply").string(),
+                        quality_panels(result.surface_quality, result.cell_quality));
   }
   if (wanted(OutputFormat::ReportHtml)) write_report_html(staged / "report.html", result, page);
 }

@@ -166,4 +166,12 @@ HistogramPanel cell_quality_panel(const CellQuality& quality) {
   return panel;
 }
 
+std::vector<HistogramPanel> quality_panels(const std::optional<SurfaceQuality>& surface,
+                                           const std::optional<CellQuality>& cells) {
+  std::vector<HistogramPanel> panels;
+  if (surface) panels.push_back(surface_quality_panel(*surface));
+  if (cells) panels.push_back(cell_quality_panel(*cells));
+  return panels;
+}
+
 }  // namespace vorocrust

@@ -29,25 +29,17 @@ std::string figure(double x) { return report::locale_free_number(x, std::chars_f
 std::string count(std::size_t n) { return std::to_string(n); }
 std::string text(std::string_view s) { return report::escape_markup(s); }
 
-struct Box {
-  Point low = Point::Constant(std::numeric_limits<double>::infinity());
-  Point high = -Point::Constant(std::numeric_limits<double>::infinity());
-  void add(const Point& p) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  }
-  bool empty() const { return !(low.array() <= high.array()).all(); }
-};
+using Box = Eigen::AlignedBox3d;
 
 Box bounds(const std::vector<Point>& points) {
   Box box;
-  for (const Point& p : points) box.add(p);
+  for (const Point& p : points) box.extend(p);
   return box;
 }
 
 // Looking down on the model from the front right, the way most meshes are first shown.
 View three_quarter_view(const Box& box, int width, int height) {
-  return View(box.low, box.high, Point(-1, 1.5, -1), Point(0, 0, 1), width, height);
+  return View(box.min(), box.max(), Point(-1, 1.5, -1), Point(0, 0, 1), width, height);
 }
 
 // A convex polygon, filled as a fan about its first point, shaded by its normal, with its edges
@@ -107,7 +99,7 @@ void draw_surface(Picture& picture, const View& view, const SurfaceMesh& surface
 Picture surface_picture(const SurfaceMesh& surface) {
   Picture picture(kPictureWidth, kPictureHeight, kBackground);
   const Box box = bounds(surface.vertices);
-  if (box.empty()) return picture;
+  if (box.isEmpty()) return picture;
   draw_surface(picture, three_quarter_view(box, kPictureWidth, kPictureHeight), surface, true);
   return picture;
 }
@@ -130,9 +122,8 @@ struct Cut {
 
 Cut cut_across(const VoronoiMesh& mesh, const Box& box) {
   Cut cut;
-  const Point extent = box.high - box.low;
-  extent.minCoeff(&cut.axis);
-  cut.at = (box.low[cut.axis] + box.high[cut.axis]) / 2;
+  box.sizes().minCoeff(&cut.axis);
+  cut.at = box.center()[cut.axis];
   cut.kept.assign(mesh.cells.size(), 0);
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     double low = std::numeric_limits<double>::infinity(), high = -low;
@@ -151,7 +142,7 @@ Cut cut_across(const VoronoiMesh& mesh, const Box& box) {
 Picture cut_picture(const VoronoiMesh& mesh, int width, int height, std::string* caption) {
   Picture picture(width, height, kBackground);
   const Box box = bounds(mesh.points);
-  if (box.empty()) return picture;
+  if (box.isEmpty()) return picture;
   const Cut cut = cut_across(mesh, box);
   // Looking at the plane from its near side, a little askew so that the cut cells' sides show.
   const int a = cut.axis, b = (a + 1) % 3, c = (a + 2) % 3;
@@ -160,7 +151,7 @@ Picture cut_picture(const VoronoiMesh& mesh, int width, int height, std::string*
   forward[b] = 0.25;
   forward[c] = 0.18;
   up[a == 2 ? 1 : 2] = 1;
-  const View view(box.low, box.high, forward, up, width, height);
+  const View view(box.min(), box.max(), forward, up, width, height);
   const auto kept = [&](std::int32_t cell) { return cell != kNoCell && cut.kept[static_cast<std::size_t>(cell)]; };
   for (const VoronoiFace& face : mesh.faces) {
     // Only the hull of the kept cells shows.
@@ -192,8 +183,8 @@ std::vector<std::size_t> worst_cells(const CellQuality& quality) {
 Picture worst_cells_picture(const MeshResult& result, const std::vector<std::size_t>& worst) {
   Picture picture(kPictureWidth, kPictureHeight, kBackground);
   Box box = bounds(result.surface.vertices);
-  for (const Point& p : result.cells.points) box.add(p);
-  if (box.empty()) return picture;
+  for (const Point& p : result.cells.points) box.extend(p);
+  if (box.isEmpty()) return picture;
   const View view = three_quarter_view(box, kPictureWidth, kPictureHeight);
   draw_surface(picture, view, result.surface, false);
   // In front of the surface, wherever they are.
@@ -370,9 +361,8 @@ std::string report_html(const MeshResult& result, const ReportPage& page) {
   }
 
   html << "<h2>Histograms</h2>\n";
-  std::vector<HistogramPanel> panels = {surface_quality_panel(*result.surface_quality)};
-  if (have_cells) panels.push_back(cell_quality_panel(*result.cell_quality));
-  image(html, "histograms", "data:image/svg+xml;base64," + report::base64(histogram_svg("quality: " + page.title, panels)),
+  const std::string svg = histogram_svg("quality: " + page.title, quality_panels(result.surface_quality, result.cell_quality));
+  image(html, "histograms", "data:image/svg+xml;base64," + report::base64(svg),
         "Triangle quality of the surface" + std::string(have_cells ? " and aspect ratio of the cells" : ""));
 
   html << "<h2>Timings</h2>\n";
