@@ -110,7 +110,7 @@ TEST(Cells, SameResultForOneAndTwoThreads) {
   one.threads = 1;
   two.threads = 2;
   const VoronoiMesh a = compute_cells(seeds, one), b = compute_cells(seeds, two);
-  ASSERT_GT(a.cells.size(), 8192u) << "more than one slab";
+  ASSERT_GT(a.cells.size(), 8192u) << "cells enough for both threads";
   ASSERT_EQ(a.points, b.points);
   ASSERT_EQ(a.faces.size(), b.faces.size());
   for (std::size_t f = 0; f < a.faces.size(); ++f) {

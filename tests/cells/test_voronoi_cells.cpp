@@ -22,7 +22,9 @@ std::vector<Point> jittered_lattice(int n) {
 
 void expect_containers_give_the_cells_cut_alone(const std::vector<Point>& positions, const std::vector<Index>& inner) {
   std::vector<char> lost;
-  const std::vector<cells::RawCell> in_containers = cells::compute_voronoi_cells_in_containers(positions, inner, lost);
+  const cells::SeedTree tree(positions);
+  const std::vector<cells::RawCell> in_containers =
+      cells::compute_voronoi_cells_in_containers(positions, inner, tree, lost);
   const std::vector<cells::RawCell> alone = cells::compute_voronoi_cells(positions, inner);
   ASSERT_EQ(lost, std::vector<char>(inner.size(), 0));
   for (std::size_t k = 0; k < inner.size(); ++k) {
@@ -63,13 +65,29 @@ TEST(VoronoiCells, FlatCellsAsContainersGiveThem) {
   expect_containers_give_the_cells_cut_alone(positions, inner);
 }
 
+// A cluster of seeds a thousand times closer than the lattice about it, as where a thin feature
+// of the surface sits in a wide box of interior seeds: each container holds the seeds near its
+// cell, whatever their spacing, and the cells are those cut alone, in the cluster and around it.
+TEST(VoronoiCells, ContainersOnSeedsOfUnevenSpacing) {
+  std::vector<Point> positions = jittered_lattice(6);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> in_cluster(-0.01, 0.01);
+  const Point centre(2.5, 2.5, 2.5);
+  const Index first = static_cast<Index>(positions.size());
+  for (int k = 0; k < 400; ++k) positions.push_back(centre + Point(in_cluster(rng), in_cluster(rng), in_cluster(rng)));
+  std::vector<Index> inner = {43, 44, 79, 80, 86, 129};
+  for (Index k = first; k < first + 400; k += 7) inner.push_back(k);
+  expect_containers_give_the_cells_cut_alone(positions, inner);
+}
+
 TEST(VoronoiCells, ContainersFlagTheCellsTheyLose) {
   std::vector<Point> positions = jittered_lattice(6);
   positions.push_back(positions[86]);  // a twin: Voro++ cuts each away by the other's plane
   const std::vector<Index> inner = {43, 86, static_cast<Index>(positions.size() - 1)};
   std::vector<char> lost;
   std::vector<cells::RawCell> cells;
-  ASSERT_NO_THROW(cells = cells::compute_voronoi_cells_in_containers(positions, inner, lost));
+  const cells::SeedTree tree(positions);
+  ASSERT_NO_THROW(cells = cells::compute_voronoi_cells_in_containers(positions, inner, tree, lost));
   EXPECT_EQ(lost, (std::vector<char>{0, 1, 1}));
   EXPECT_FALSE(cells[0].vertices.empty());
 }

@@ -513,7 +513,7 @@ VoronoiMesh GrowingCells::assemble(Cell&& cell) const {
         std::vector<Index> subset(which.size());
         for (std::size_t k = 0; k < which.size(); ++k) subset[k] = cell_seeds[which[k]];
         std::vector<char> lost;
-        std::vector<RawCell> redone = compute_voronoi_cells_in_containers(frame.normalized, subset, lost);
+        std::vector<RawCell> redone = compute_voronoi_cells_in_containers(frame.normalized, subset, seed_tree(), lost);
         for (std::size_t k = 0; k < which.size(); ++k) {
           if (!lost[k]) raw[which[k]] = std::move(redone[k]);  // else the cell as cut alone stays
         }

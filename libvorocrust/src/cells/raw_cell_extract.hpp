@@ -1,6 +1,6 @@
 // Internal: a Voro++ cell as a RawCell, numbered by position so that equal cells are equal
 // whatever the order of the cuts that made them (voronoi_cells.hpp says why). Shared by the two
-// ways cells are cut: one at a time (cell_cutter.cpp) and in Voro++'s containers (slab_worker.cpp).
+// ways cells are cut: one at a time (cell_cutter.cpp) and in Voro++'s containers (local_containers.cpp).
 #pragma once
 
 #include <cstdint>

@@ -63,15 +63,16 @@ struct SeedTree {
 
 std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds);
 
-// The same cells from Voro++'s containers: slabs of a fixed number of cells along the longest
-// axis, one container each with a margin of neighbouring seeds, widened until every vertex's
-// empty sphere lies within it. Slower on VoroCrust's uneven seeds, but it cuts in another order:
-// the assembly's first fallback for cells at odds with their neighbours. Where Voro++ gives no
-// cell (round-off can cut a cell away among seeds that nearly coincide: two surface seeds of
-// cgal_bones 4e-5 radii apart) or one that keeps a wall of its container, lost[k] is set and
-// cells[k] is not to be used (empty, or the cell with the wall).
+// The same cells from Voro++'s containers, one per cell holding the seeds within its reach
+// (widened until every vertex's empty sphere lies within it). Slower than cutting, but Voro++
+// cuts there in another order: the assembly's first fallback for cells at odds with their
+// neighbours. Where Voro++ gives no cell (round-off can cut a cell away among seeds that nearly
+// coincide: two surface seeds of cgal_bones 4e-5 radii apart) or one that keeps a wall of its
+// container, lost[k] is set and cells[k] is not to be used (empty, or the cell with the wall).
+// `tree`: the positions' SeedTree.
 std::vector<RawCell> compute_voronoi_cells_in_containers(const std::vector<Point>& positions,
-                                                         const std::vector<Index>& cell_seeds, std::vector<char>& lost);
+                                                         const std::vector<Index>& cell_seeds, const SeedTree& tree,
+                                                         std::vector<char>& lost);
 
 // Computes cells[k] again for each k in `which`, from an initial cube 1.375^variant times as
 // big. Variant 0 is what compute_voronoi_cells does. Where many seeds are nearly cospherical,
