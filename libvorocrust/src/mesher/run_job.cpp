@@ -195,8 +195,8 @@ void suggest_smooth(JobResult& result, const MeshOptions& options, const Warning
       std::to_string(bends.sharp_edges) + " of its edges bend past `sharp_angle` (" +
       std::to_string(static_cast<int>(std::lround(options.sharp_angle()))) + " degrees), " + std::to_string(percent) +
       " % of them by less than 15 degrees more, in " + std::to_string(bends.chains) + " chains of " +
-      std::to_string(bends.median_chain) +
-      " edges at the median: each would be protected as a crease. Mesh it with `smooth`, or with a larger "
+      std::to_string(bends.median_chain) + (bends.median_chain == 1 ? " edge" : " edges") +
+      " at the median: each would be protected as a crease. Mesh it with `smooth`, or with a larger "
       "`sharp_angle` to keep only its true creases");
   if (warn) warn(result.warnings.back());
 }
