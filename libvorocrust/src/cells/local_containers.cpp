@@ -63,23 +63,26 @@ class LocalContainer {
   }
 
   // The cell among the seeds near_ holds, in a cube of half-side `reach` (and a little room)
-  // about its seed.
+  // about its seed. The container works in units of a power of two near an eighth of the reach,
+  // with the seed at the origin: Voro++'s plane tolerance is absolute, and a cell far smaller
+  // than the frame's unit (the cutter cuts those at their own scale too) can make it lose track
+  // of a cut, or fail.
   bool compute_among(Index seed, double reach, RawCell& out) {
     const Point& p = positions_[seed];
-    const double half = reach * (1 + kWallRoom);
+    const double scale = std::exp2(std::round(std::log2(reach / 8))), inverse = 1 / scale;  // exact
+    const double half = reach * (1 + kWallRoom) * inverse;
     const double block = std::cbrt(std::pow(2 * half, 3) * kSeedsPerBlock / static_cast<double>(near_.size()));
     const int blocks = static_cast<int>(std::clamp(std::ceil(2 * half / block), 1.0, 64.0));
-    voro::container con(p.x() - half, p.x() + half, p.y() - half, p.y() + half, p.z() - half, p.z() + half, blocks,
-                        blocks, blocks, false, false, false, 8);
+    voro::container con(-half, half, -half, half, -half, half, blocks, blocks, blocks, false, false, false, 8);
     for (const auto& [other, d2] : near_) {
       if (other == seed) continue;
-      const Point& q = positions_[other];
+      const Point q = (positions_[other] - p) * inverse;
       con.put(static_cast<int>(other), q.x(), q.y(), q.z());
     }
     voro::particle_order order;
-    con.put(order, static_cast<int>(seed), p.x(), p.y(), p.z());
-    if (!con.compute_cell(cell_, order.o[0], order.o[1])) return false;
-    extract(cell_, p, out, scratch_);
+    con.put(order, static_cast<int>(seed), 0, 0, 0);
+    if (order.op == order.o || !con.compute_cell(cell_, order.o[0], order.o[1])) return false;
+    extract(cell_, p, out, scratch_, scale);
     return true;
   }
 
