@@ -58,8 +58,11 @@ class CellCutter {
   CellCutter(const std::vector<Point>& positions, const StaticKdTree<Cloud>& tree) : positions_(positions), tree_(tree) {}
 
   // `reach`: half the side of the cube bigger than all seeds; `variant` scales it (and the local
-  // cube) by 1.375^variant. `at_local_scale`: see below.
-  void cut(Index seed, double reach, int variant, bool at_local_scale, RawCell& out) {
+  // cube) by 1.375^variant. `at_local_scale`: see below. `first`: seeds to cut by before all
+  // others, those whose cuts an earlier try lost.
+  void cut(Index seed, double reach, int variant, bool at_local_scale, RawCell& out,
+           const std::vector<std::uint32_t>& first = {}) {
+    first_cuts_ = first;
     const double growth = std::pow(1.375, variant);
     // Voro++ decides what lies on a plane with an absolute tolerance, which the frame sets to
     // about 1e-11 of the seed spacing. Where seeds crowd far closer than the mean (a thin part of
@@ -126,6 +129,15 @@ class CellCutter {
     cell_.init(-half_side, half_side, -half_side, half_side, -half_side, half_side);
     measure_cell();
     double reach2 = 0;  // the farthest seed tried, squared
+    // A cut lost to round-off among nearly cospherical seeds is lost in the same way whatever the
+    // cube; made before the others, where no vertex lies near its plane yet, it holds. (Its seed
+    // lies within twice the farthest vertex, so `reach2` covers it.)
+    for (const std::uint32_t other : first_cuts_) {
+      const Point d = (positions_[other] - p) * inverse;
+      if (misses_cell(d)) continue;
+      cell_.nplane(d.x(), d.y(), d.z(), d.squaredNorm(), static_cast<int>(other));
+      measure_cell();
+    }
     // Nearest first, a chunk at a time, each chunk twice the last: a shell guessed from the cell
     // before can hold a thousand times the seeds this one needs (where a crowd of tiny seeds sits
     // beside big cells: on igl_camelhead 2 158 a cell, half a million for some), and sorting them
@@ -142,6 +154,7 @@ class CellCutter {
           const auto& [d2, other] = *begin;
           if (other == seed) continue;
           if (d2 > radius2_ * scale2) return false;
+          if (std::find(first_cuts_.begin(), first_cuts_.end(), other) != first_cuts_.end()) continue;
           reach2 = d2;
           const Point d = (positions_[other] - p) * inverse;
           if (misses_cell(d)) continue;
@@ -235,23 +248,28 @@ class CellCutter {
   double radius2_ = 0;
   double guess2_ = 0;  // the squared reach the last cell cut at scale 1 needed
   Point box_lo_, box_hi_;
+  std::vector<std::uint32_t> first_cuts_;  // see cut()
 };
 
-// Whether every vertex of `cell` is as near its seed as any other seed is, up to round-off
-// (1e-6 of its distance, far above what degenerate vertices differ by). Where many seeds are
-// nearly cospherical, Voro++ 0.4.6 can lose a whole cut to round-off in an earlier one, and
-// the cell keeps a wedge of its neighbour's.
+// The seeds nearer than its own to a vertex of `cell`, beyond round-off (1e-6 of its distance,
+// far above what degenerate vertices differ by), added to `inside`; whether there is none. Where
+// many seeds are nearly cospherical, Voro++ 0.4.6 can lose a whole cut to round-off in an
+// earlier one, and the cell keeps a wedge of its neighbour's.
 bool holds_only_its_own(const std::vector<Point>& positions, const StaticKdTree<Cloud>& tree, Index seed,
-                        const RawCell& cell) {
+                        const RawCell& cell, std::vector<std::uint32_t>* inside = nullptr) {
   const Point& p = positions[seed];
+  bool only = true;
   for (const Point& x : cell.vertices) {
     std::uint32_t nearest = 0;
     double nearest2 = 0;
     tree.knnSearch(x.data(), 1, &nearest, &nearest2);
     const double own2 = (x - p).squaredNorm();
-    if (nearest != seed && nearest2 < own2 * (1 - 2e-6)) return false;
+    if (nearest == seed || !(nearest2 < own2 * (1 - 2e-6))) continue;
+    only = false;
+    if (!inside) break;
+    if (std::find(inside->begin(), inside->end(), nearest) == inside->end()) inside->push_back(nearest);
   }
-  return true;
+  return only;
 }
 
 // Initial cube sizes a cell that failed holds_only_its_own is cut from, one after the other.
@@ -289,9 +307,13 @@ void recompute_voronoi_cells(const std::vector<Point>& positions, const std::vec
       RawCell& out = cells[which[k]];
       cutter.cut(seed, base, variant, false, out);
       // Variants other than 0 are the assembly's fallbacks: a cell there is checked, and cut at
-      // local scale and from other cubes until it holds nothing of another seed's.
-      for (int t = 1; variant > 0 && t < kVerifiedTries && !holds_only_its_own(positions, tree, seed, out); ++t) {
-        cutter.cut(seed, base, variant + (t / 2) * 4, t % 2 == 1, out);
+      // local scale and from other cubes, the seeds of the cuts lost so far first, until it holds
+      // nothing of another seed's. (On igl_camelhead at --sharp-angle 60, a cell among nearly
+      // cospherical seeds lost the same cut from every cube, and kept a vertex 40 % nearer that
+      // seed than its own.)
+      std::vector<std::uint32_t> lost_cuts;
+      for (int t = 1; variant > 0 && t < kVerifiedTries && !holds_only_its_own(positions, tree, seed, out, &lost_cuts); ++t) {
+        cutter.cut(seed, base, variant + (t / 2) * 4, t % 2 == 1, out, lost_cuts);
       }
       for (const std::int32_t n : out.neighbours) {
         if (n < 0) unbounded[k] = seed;
