@@ -233,7 +233,7 @@ void fix_folds(SurfaceMesh& mesh, const ValidationOptions& options, ValidationRe
                                  "faces folded over all their neighbours (the surface turned back on itself over them)",
                                  folded, options.max_listed);
   finding.message += "; unfolded by moving " + std::to_string(unfolding.moved_vertices) +
-                     " vertices to the centroid of their neighbours, by at most " +
+                     " vertices to where their faces bend least, by at most " +
                      number_text(unfolding.largest_move);
   report.findings.push_back(std::move(finding));
 }
