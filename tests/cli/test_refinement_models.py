@@ -18,8 +18,11 @@ import unittest
 BINARY, MODELS = sys.argv[1:3]
 del sys.argv[1:3]
 
+# igl_camelhead: a decimated scan whose two inverted faces, once unfolded, leave creases that meet
+# at a few degrees at corners; its refinement stopped (exit 4) until a crease piece left uncovered
+# while a corner ball shrank was sampled again whole.
 MODELS_TO_CHECK = ["cgal_joint.off", "cgal_fandisk.off", "igl_bunny.off", "sandia_bracket.obj",
-                   "sandia_non_manifold_box.obj", "netgen_hinge.stl"]
+                   "sandia_non_manifold_box.obj", "netgen_hinge.stl", "igl_camelhead.off"]
 
 
 class RefinementMeetsTheBallConditions(unittest.TestCase):

@@ -644,6 +644,12 @@ void BallRefinement::Impl::defer_lost_lower_cover(Pool& pool) {
     if (meets) {
       auto& flags = piece.is_segment() ? dirty_edge_ : dirty_face_;
       flags[piece.element] = std::max(flags[piece.element], kLostCover);
+      // The next pass samples an element marked so only where cover was given up, and this piece
+      // was never covered at all: all of it must be sampled again, not only the part the lower
+      // ball gave up, or the rest stays bare (igl_camelhead: 1.6e-4 of a crease beside a corner
+      // whose ball shrank, and the patch beside it then split without end).
+      const Point centre = piece.centroid();
+      (piece.is_segment() ? lost_edges_ : lost_faces_).push_back({centre, 0.0, 2 * piece.circumradius(centre)});
       continue;
     }
     kept.pieces.push_back(piece);
