@@ -1,6 +1,7 @@
 // Seed pairs and sliver elimination on hand-made quartets (paper 2.4, Figure 8).
 #include <gtest/gtest.h>
 
+#include "ball_sites.hpp"
 #include "refinement/ball_index.hpp"
 #include "seeds/eliminate_slivers.hpp"
 #include "seeds/seed_pairs.hpp"
@@ -8,11 +9,7 @@
 namespace vorocrust {
 namespace {
 
-SurfaceSite site_at(const Point& p) {
-  SurfaceSite s;
-  s.position = p;
-  return s;
-}
+using test::site_at;
 
 // Four balls around a nearly flat quad: the diagonal a-c is slightly shorter than b-d, so the
 // two triangles through a-c are the surface and the quartet's fourth-ball coverage decides it.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "ball_sites.hpp"
 #include "refinement/ball_index.hpp"
 #include "seeds/skinny_triangles.hpp"
 
@@ -11,12 +12,7 @@ namespace {
 
 constexpr double kDeep = 1 - 0.13397459621556135;  // 1 - alpha
 
-SurfaceSite site(const Point& p, StratumType type = StratumType::Patch) {
-  SurfaceSite s;
-  s.position = p;
-  s.type = type;
-  return s;
-}
+SurfaceSite site(const Point& p, StratumType type = StratumType::Patch) { return test::site_at(p, type); }
 
 SeedPair triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   return SeedPair{{a, b, c}, {Point::Zero(), Point::Zero()}};

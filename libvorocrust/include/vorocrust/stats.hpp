@@ -39,9 +39,10 @@ struct VOROCRUST_API RefinementStats {
 
 // One round of sliver elimination (paper 2.4, Figure 9): the triplets of overlapping balls as
 // found, how many had a half-covered seed pair, and the shrinking that followed: for the
-// slivers, or, once no pair was half-covered, to split skinny surface triangles.
+// slivers, or, once no pair was half-covered, to part near-twin seeds or split skinny surface
+// triangles.
 struct VOROCRUST_API SliverIteration {
-  enum class Shrunk { Nothing, ForSlivers, ForSkinnyTriangles };
+  enum class Shrunk { Nothing, ForSlivers, ForSkinnyTriangles, ForNearTwins };
   Shrunk shrunk = Shrunk::Nothing;  // Nothing: the last iteration
   std::size_t balls = 0;
   std::size_t triplets = 0;      // triplets whose spheres meet in two points
@@ -51,6 +52,9 @@ struct VOROCRUST_API SliverIteration {
   // Surface triangles of patch balls with an angle below the bound, counted once no pair is
   // half-covered (0 before, and without a bound).
   std::size_t skinny_triangles = 0;
+  // Points of two seed pairs nearer than 1e-4 of their radius, counted once no pair is
+  // half-covered (seeds/near_twins.hpp).
+  std::size_t near_twins = 0;
   double seconds = 0;              // finding the pairs, shrinking and refining again
 };
 

@@ -353,6 +353,7 @@ std::string run_report_json(const RunReport& report, int indent) {
     for (const SliverIteration& it : m.slivers.iterations) {
       rounds.push_back({{"shrunk_for", it.shrunk == SliverIteration::Shrunk::ForSlivers           ? "slivers"
                                        : it.shrunk == SliverIteration::Shrunk::ForSkinnyTriangles ? "skinny_triangles"
+                                       : it.shrunk == SliverIteration::Shrunk::ForNearTwins       ? "near_twins"
                                                                                                   : "nothing"},
                         {"balls", it.balls},
                         {"triplets", it.triplets},
@@ -361,6 +362,7 @@ std::string run_report_json(const RunReport& report, int indent) {
                         {"balls_shrunk", it.balls_shrunk},
                         {"max_shrinkage_ratio", it.max_shrinkage_ratio},
                         {"skinny_triangles", it.skinny_triangles},
+                        {"near_twins", it.near_twins},
                         {"seconds", it.seconds}});
     }
     doc["slivers"] = {{"iterations", m.slivers.rounds()},
@@ -369,6 +371,8 @@ std::string run_report_json(const RunReport& report, int indent) {
                       {"sliver_rounds", m.slivers.rounds_for(SliverIteration::Shrunk::ForSlivers)},
                       {"skinny_triangle_rounds", m.slivers.rounds_for(SliverIteration::Shrunk::ForSkinnyTriangles)},
                       {"skinny_triangles_left", m.slivers.iterations.back().skinny_triangles},
+                      {"near_twin_rounds", m.slivers.rounds_for(SliverIteration::Shrunk::ForNearTwins)},
+                      {"near_twins_left", m.slivers.iterations.back().near_twins},
                       {"per_iteration", rounds}};
     std::size_t surface_seeds = 0;
     for (const Seed& seed : m.seeds) surface_seeds += seed.kind == SeedKind::Surface;

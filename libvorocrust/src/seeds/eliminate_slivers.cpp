@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "seeds/near_twins.hpp"
 #include "seeds/skinny_triangles.hpp"
 #include "seeds/sphere_triplet.hpp"
 #include "vorocrust/error.hpp"
@@ -99,7 +100,7 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
       record.balls_shrunk = shrinks.radii.size();
       record.max_shrinkage_ratio = shrinks.max_ratio;
       for (const auto& [ball, radius] : shrinks.radii) {
-        if (why == SliverIteration::Shrunk::ForSlivers) {
+        if (why != SliverIteration::Shrunk::ForSkinnyTriangles) {
           refinement.shrink_for_slivers(ball, radius);
         } else {
           refinement.shrink_for_skinny_triangle(ball, radius);
@@ -121,6 +122,16 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
         refinement.relax_deep_coverage();
       }
       finish(choose_sliver_shrinks(refinement.index(), pairs.half_covered), SliverIteration::Shrunk::ForSlivers);
+      continue;
+    }
+    // Twins first: a skinny-triangle round's new balls can make twins, but parting twins only
+    // moves points apart.
+    const TwinShrinks twins = choose_twin_shrinks(refinement.index(), pairs.uncovered);
+    record.near_twins = twins.twins;
+    if (!twins.shrinks.radii.empty() &&
+        stats.rounds_for(SliverIteration::Shrunk::ForNearTwins) < static_cast<std::size_t>(options.max_near_twin_rounds)) {
+      sliver_rounds_in_a_row = 0;
+      finish(twins.shrinks, SliverIteration::Shrunk::ForNearTwins);
       continue;
     }
     if (options.min_triangle_angle_degrees > 0) {

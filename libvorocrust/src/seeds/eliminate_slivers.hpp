@@ -1,8 +1,8 @@
 // Internal: sliver elimination (paper 2.4). Shrinks balls until no triplet of overlapping balls
 // has a half-covered seed pair, running the refinement again after each round so C1-C4 hold.
-// With an angle bound, rounds that shrink balls about skinny surface triangles
-// (seeds/skinny_triangles.hpp) follow once no pair is half-covered, each followed by sliver
-// elimination again.
+// Once no pair is half-covered, rounds that part near-twin seeds (seeds/near_twins.hpp) follow,
+// then, with an angle bound, rounds that shrink balls about skinny surface triangles
+// (seeds/skinny_triangles.hpp), each followed by sliver elimination again.
 #pragma once
 
 #include "refinement/refine_balls.hpp"
@@ -22,6 +22,9 @@ struct SliverOptions {
   // triangles, then 198, 134, 88, 58, 44, 19, 11, 6, 1). Safe mode counts the sliver rounds
   // since the last of them; the guard counts all sliver rounds.
   int max_skinny_triangle_rounds = 10;
+  // Rounds that part near-twin seeds (seeds/near_twins.hpp) at most; twins left after them are
+  // merged into one seed by surface_seeds. Parting one pair can bring others: few, not none.
+  int max_near_twin_rounds = 10;
 };
 
 // Returns the seed pairs of the final balls, none of them half-covered.

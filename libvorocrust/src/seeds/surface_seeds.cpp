@@ -7,19 +7,16 @@
 #include <algorithm>
 
 #include "geometry/point_cloud.hpp"
+#include "seeds/near_twins.hpp"
 
 namespace vorocrust {
 
 namespace {
 
-// Seeds of one region nearer each other than this, in radii, are one seed. Where four balls'
-// spheres nearly pass through one point, two triplets have points there a hair apart, neither
-// inside the other's fourth ball. Their cells are halves of one cell, split by a plane through
-// nearly coincident vertices, which the welding resolves in general (cgal_joint has such seeds
-// 1.9e-4 radii apart and nearer) but not always: cgal_bones' two seeds 4.2e-5 radii apart could
-// not be assembled. Dropping one moves the cells' boundary off the surface facets by about that
-// much, so only such near twins go.
-constexpr double kTwin = 1e-4;
+// Seeds of one region nearer each other than kTwin radii are one seed. Sliver elimination
+// parts such twins (seeds/near_twins.hpp) for a few rounds; any left after those go here, which
+// moves the cells' boundary off their pairs' facets by about that much. Cells of seeds so near
+// may not assemble otherwise (cgal_bones: two seeds 4.2e-5 radii apart).
 
 // Marks each seed with a seed of its region before it within kTwin of its radius.
 std::vector<char> later_twins(const std::vector<Seed>& seeds) {
