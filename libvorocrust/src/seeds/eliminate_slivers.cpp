@@ -81,6 +81,27 @@ BallShrinks choose_sliver_shrinks(const BallIndex& balls, const std::vector<Half
   return requests.result(balls);
 }
 
+namespace {
+
+// Safe mode bounds the rounds (paper 2.4), so this stays a guard; were it reached, the run stops
+// as a refusal that names where the slivers are, not as an internal error.
+Error unending_slivers(const BallIndex& balls, const SeedPairs& pairs, int rounds) {
+  const SeedPair& first = pairs.half_covered.front().pair;
+  Error::Location where;
+  for (std::uint32_t b : first.balls) {
+    if (!where.face && balls[b].site.type == StratumType::Patch) where.face = balls[b].site.element;
+  }
+  return Error(Error::Kind::InvalidGeometry,
+               "sliver elimination did not end after " + std::to_string(rounds) + " rounds: " +
+                   std::to_string(pairs.half_covered.size()) + " half-covered seed pairs are left, the first near " +
+                   describe_point(first.points[0]) +
+                   "; surfaces that nearly touch there are the usual cause; another --seed or a smaller --lipschitz "
+                   "places the balls differently",
+               where);
+}
+
+}  // namespace
+
 SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& options, const ProgressCallback& progress,
                             SliverStats& stats) {
   using Clock = std::chrono::steady_clock;
@@ -111,11 +132,7 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
       stats.iterations.push_back(record);
     };
     if (!pairs.half_covered.empty()) {
-      if (sliver_rounds >= options.max_iterations) {
-        throw Error(Error::Kind::Internal,
-                    "sliver elimination did not end after " + std::to_string(sliver_rounds) + " iterations (" +
-                        std::to_string(pairs.half_covered.size()) + " half-covered seed pairs left)");
-      }
+      if (sliver_rounds >= options.max_iterations) throw unending_slivers(refinement.index(), pairs, sliver_rounds);
       ++sliver_rounds;
       if (sliver_rounds_in_a_row++ == options.iterations_before_safe_mode && !stats.safe_mode) {
         stats.safe_mode = true;
