@@ -54,6 +54,18 @@ TEST(NearTwins, PointsFartherThanTheThresholdAreNotTwins) {
   EXPECT_TRUE(t.shrinks.radii.empty());
 }
 
+// Each point reaches kTwin of its own triplet's mean radius: a pair of points counts when either
+// reaches the other, whichever comes first (surface_seeds drops a seed on the same rule).
+TEST(NearTwins, EitherPointsReachMakesTwins) {
+  // Triplet (0, 1, 3) is four times larger: its point reaches 4e-4 and the other's 1.2e-4.
+  Quartet q(3e-4, 1.0, 10.0);
+  const TwinShrinks a = choose_twin_shrinks(q.balls, q.pairs);
+  std::swap(q.pairs[0], q.pairs[1]);
+  const TwinShrinks b = choose_twin_shrinks(q.balls, q.pairs);
+  EXPECT_EQ(a.twins, 1u);
+  EXPECT_EQ(b.twins, 1u);
+}
+
 TEST(NearTwins, APairsOwnTwoPointsAreNeverTwins) {
   BallIndex balls;
   for (int k = 0; k < 3; ++k) balls.add(site_at(Point::Unit(k)), 1.0);

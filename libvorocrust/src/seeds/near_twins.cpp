@@ -46,19 +46,24 @@ TwinShrinks choose_twin_shrinks(const BallIndex& balls, const std::vector<SeedPa
   using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
   const Cloud cloud{&points};
   const StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  BallShrinkRequests requests;
+  // Each point looks as far as its own triplet's radius says, as surface_seeds does, so a pair
+  // counts when either of its points reaches the other.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> twins;
   std::vector<std::uint32_t> near;
   for (std::uint32_t i = 0; i < points.size(); ++i) {
-    const SeedPair& pair = pairs[i / 2];
-    const double reach = kTwin * mean_radius(balls, pair);
-    near.clear();
+    const double reach = kTwin * mean_radius(balls, pairs[i / 2]);
     points_within(tree, points[i], reach * reach, near);
     for (std::uint32_t j : near) {
-      if (j <= i || j / 2 == i / 2) continue;
-      ++out.twins;
-      const std::uint32_t ball = ball_to_shrink(balls, pair, pairs[j / 2]);
-      if (ball != ~std::uint32_t{0}) requests.ask(ball, (1 - kShrinkClearance) * balls[ball].radius);
+      if (j / 2 != i / 2) twins.emplace_back(std::min(i, j), std::max(i, j));
     }
+  }
+  std::sort(twins.begin(), twins.end());
+  twins.erase(std::unique(twins.begin(), twins.end()), twins.end());
+  out.twins = twins.size();
+  BallShrinkRequests requests;
+  for (const auto& [i, j] : twins) {
+    const std::uint32_t ball = ball_to_shrink(balls, pairs[i / 2], pairs[j / 2]);
+    if (ball != ~std::uint32_t{0}) requests.ask(ball, (1 - kShrinkClearance) * balls[ball].radius);
   }
   out.shrinks = requests.result(balls);
   return out;
