@@ -55,12 +55,15 @@ TEST(Cells, TwoMaterialsSplitAtAPlane) {
   EXPECT_GT(by_pair[std::make_pair(1, 0)], 0u);
   EXPECT_GT(by_pair[std::make_pair(2, 0)], 0u);
   EXPECT_GT(by_pair[std::make_pair(1, 2)], 0u);
+  // The interface faces are those between the materials, whichever side owns them.
+  EXPECT_EQ(count_interface_faces(m), by_pair[std::make_pair(1, 2)] + by_pair[std::make_pair(2, 1)]);
   // Only material 2 asked for: material 1's seeds bound it like outside seeds do.
   CellsOptions only2;
   only2.materials = {2};
   const VoronoiMesh m2 = compute_cells(seeds, only2);
   expect_valid(m2, seeds);
   for (const VoronoiCell& c : m2.cells) EXPECT_EQ(c.region, 2);
+  EXPECT_EQ(count_interface_faces(m2), 0u);
 }
 
 // An exact lattice: every Voronoi vertex is shared by eight cospherical seeds, which Voro++

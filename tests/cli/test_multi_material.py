@@ -4,6 +4,7 @@ meshed with default options as a user meshes them and read back by the real read
 - each region's cells fill the region: their volumes sum to the region's volume in report.json
   within what the surface's Hausdorff error allows, and to the region's volume found here
   independently (a voxel flood fill of the input, tests/voxel_regions.py) within its grid error;
+- the cells' boundary and interface faces are the output surface's triangles, one for one;
 - the interfaces are closed: every region's boundary in the output, the faces with that region
   on exactly one side, uses each of its edges an even number of times, so no interface has a hole;
 - checkMesh reads the case with its zones: one cell zone per material, one face zone per pair of
@@ -191,6 +192,13 @@ class MultiMaterial(unittest.TestCase):
                 self.assertTrue(all(i in cells and area > 0 for i, _, area in records))
                 boundary += len(records)
         self.assertEqual(boundary, sum(n for p, n in interface_pairs.items() if p[0] == 0))
+
+        # The cells conform to the output surface face for face: one boundary face per triangle
+        # with a material on one side only, one interface face per triangle between two materials.
+        by_sides = report["surface"]["triangles_by_sides"]
+        self.assertEqual(report["cells"]["boundary_faces"], by_sides["boundary"])
+        self.assertEqual(report["cells"]["interface_faces"], by_sides["interface"])
+        self.assertEqual(sum(n for p, n in interface_pairs.items() if p[0] > 0), by_sides["interface"])
 
         print("\n  %s: %s; voxel volumes %s; checkMesh %s" % (
             model, ", ".join("%s %.6g" % (g["name"], by_material[g["label"]]) for g in materials),

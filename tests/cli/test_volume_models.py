@@ -108,6 +108,7 @@ class VolumeMeshOfEachModel(unittest.TestCase):
                 # The cells' boundary is the output surface, face for face in number: no seed pair
                 # lost to a near twin (the bunny had 127 086 faces for 127 080 triangles).
                 self.assertEqual(report["cells"]["boundary_faces"], report["surface"]["triangles"])
+                self.assertEqual(report["surface"]["triangles_by_sides"]["boundary"], report["surface"]["triangles"])
                 self.assertEqual(report["slivers"]["near_twins_left"], 0)
                 self.assertLess(largest, LINK_ANGLE_DEGREES)
                 self.assertLess(quality["link_angle"]["max"], LINK_ANGLE_DEGREES)

@@ -86,9 +86,10 @@ VOROCRUST_API FaceGeometry face_geometry(const VoronoiMesh& mesh, std::size_t fa
 // "material<N>" for N.
 VOROCRUST_API std::string region_name(const VoronoiMesh& mesh, std::int32_t label);
 
-// The figures every summary of a mesh gives: faces with a cell on both sides, and the sum of the
-// cells' volumes.
+// The figures every summary of a mesh gives: faces with a cell on both sides, those among them
+// whose two cells are of different materials (the interfaces), and the sum of the cells' volumes.
 VOROCRUST_API std::size_t count_interior_faces(const VoronoiMesh& mesh);
+VOROCRUST_API std::size_t count_interface_faces(const VoronoiMesh& mesh);
 VOROCRUST_API double total_volume(const VoronoiMesh& mesh);
 
 }  // namespace vorocrust

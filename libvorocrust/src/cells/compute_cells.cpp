@@ -607,6 +607,12 @@ std::size_t count_interior_faces(const VoronoiMesh& mesh) {
       std::count_if(mesh.faces.begin(), mesh.faces.end(), [](const VoronoiFace& f) { return f.neighbour != kNoCell; }));
 }
 
+std::size_t count_interface_faces(const VoronoiMesh& mesh) {
+  return static_cast<std::size_t>(std::count_if(mesh.faces.begin(), mesh.faces.end(), [&](const VoronoiFace& f) {
+    return f.neighbour != kNoCell && mesh.cells[f.owner].region != mesh.cells[f.neighbour].region;
+  }));
+}
+
 FaceGeometry face_geometry(const VoronoiMesh& mesh, std::size_t face) {
   const std::vector<Index>& polygon = mesh.faces[face].points;
   return geometry::polygon_geometry(polygon.size(), [&](std::size_t k) -> const Point& { return mesh.points[polygon[k]]; });

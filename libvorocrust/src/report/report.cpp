@@ -184,9 +184,28 @@ json cells_object(const VoronoiMesh& mesh, const CellQuality* quality) {
   const double volume = total_volume(mesh);
   json doc = {{"cells", mesh.cells.size()},         {"faces", mesh.faces.size()},
               {"interior_faces", interior},         {"boundary_faces", mesh.faces.size() - interior},
+              {"interface_faces", count_interface_faces(mesh)},
               {"points", mesh.points.size()},       {"volume", volume}};
   if (quality) doc["quality"] = cell_quality_object(*quality);
   return doc;
+}
+
+// The output triangles by what they separate. A conforming mesh has one boundary face per
+// "boundary" triangle (a meshed region against one that is not) and one interface face per
+// "interface" triangle (two meshed regions); a "sheet" (one region on both sides) lies inside
+// the cells of its region, cut into as many faces as its seeds make.
+json triangle_sides_object(const SurfaceMesh& surface, const std::vector<bool>& meshed) {
+  std::size_t boundary = 0, interface = 0, sheet = 0, unmeshed = 0;
+  const auto is_meshed = [&](std::int32_t label) {
+    return label >= 0 && static_cast<std::size_t>(label) < meshed.size() && meshed[label];
+  };
+  for (const RegionPair& sides : surface.face_regions) {
+    if (sides.back == sides.front) ++sheet;
+    else if (is_meshed(sides.back) && is_meshed(sides.front)) ++interface;
+    else if (is_meshed(sides.back) || is_meshed(sides.front)) ++boundary;
+    else ++unmeshed;
+  }
+  return {{"boundary", boundary}, {"interface", interface}, {"sheet", sheet}, {"unmeshed", unmeshed}};
 }
 
 // Timings as a list of {phase, seconds, runs}, one entry per phase in the order phases first ran,
@@ -380,6 +399,13 @@ std::string run_report_json(const RunReport& report, int indent) {
                       {"vertices", m.surface.num_vertices()},
                       {"triangles", m.surface.num_faces()},
                       {"regions", m.surface.region_names}};
+    // Before the cells, every region but the outside (label 0) is taken as meshed.
+    std::vector<bool> meshed(m.surface.region_names.size(), m.cells.cells.empty());
+    if (!meshed.empty()) meshed[0] = false;
+    for (const VoronoiCell& cell : m.cells.cells) {
+      if (static_cast<std::size_t>(cell.region) < meshed.size()) meshed[cell.region] = true;
+    }
+    if (m.surface.has_regions()) doc["surface"]["triangles_by_sides"] = triangle_sides_object(m.surface, meshed);
     if (m.surface_quality) doc["surface"]["quality"] = quality_object(*m.surface_quality);
   }
   if (report.result && !report.result->cells.cells.empty()) {
