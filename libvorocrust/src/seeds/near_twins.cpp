@@ -1,6 +1,10 @@
 // Near-twin seeds and the shrinks that part them (paper 2.4).
 #include "seeds/near_twins.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 #include "geometry/point_cloud.hpp"
@@ -8,12 +12,6 @@
 namespace vorocrust {
 
 namespace {
-
-double mean_radius(const BallIndex& balls, const SeedPair& pair) {
-  double r = 0;
-  for (std::uint32_t b : pair.balls) r += balls[b].radius / 3;
-  return r;
-}
 
 // The ball of the quartet that shrinks: of the balls in one triplet only, the largest (ties to
 // the higher index, so the choice does not depend on which twin was found first).
@@ -37,28 +35,46 @@ std::uint32_t ball_to_shrink(const BallIndex& balls, const SeedPair& a, const Se
 
 }  // namespace
 
-TwinShrinks choose_twin_shrinks(const BallIndex& balls, const std::vector<SeedPair>& pairs) {
-  TwinShrinks out;
-  std::vector<Point> points;
-  points.reserve(2 * pairs.size());
-  for (const SeedPair& pair : pairs) points.insert(points.end(), pair.points.begin(), pair.points.end());
-  if (points.empty()) return out;
+std::vector<std::pair<std::uint32_t, std::uint32_t>> twin_pairs(const std::vector<Point>& points,
+                                                                 const std::vector<double>& radii) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> twins;
+  if (points.empty()) return twins;
   using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
   const Cloud cloud{&points};
   const StaticKdTree<Cloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  // Each point looks as far as its own triplet's radius says, as surface_seeds does, so a pair
-  // counts when either of its points reaches the other.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> twins;
-  std::vector<std::uint32_t> near;
-  for (std::uint32_t i = 0; i < points.size(); ++i) {
-    const double reach = kTwin * mean_radius(balls, pairs[i / 2]);
-    points_within(tree, points[i], reach * reach, near);
-    for (std::uint32_t j : near) {
-      if (j / 2 != i / 2) twins.emplace_back(std::min(i, j), std::max(i, j));
-    }
-  }
+  tbb::enumerable_thread_specific<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found;
+  tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, static_cast<std::uint32_t>(points.size()), 1024),
+                    [&](const auto& range) {
+                      auto& mine = found.local();
+                      std::vector<std::uint32_t> near;
+                      for (std::uint32_t i = range.begin(); i != range.end(); ++i) {
+                        const double reach = kTwin * radii[i];
+                        points_within(tree, points[i], reach * reach, near);
+                        for (std::uint32_t j : near) {
+                          if (j != i) mine.emplace_back(std::min(i, j), std::max(i, j));
+                        }
+                      }
+                    });
+  for (const auto& mine : found) twins.insert(twins.end(), mine.begin(), mine.end());
   std::sort(twins.begin(), twins.end());
   twins.erase(std::unique(twins.begin(), twins.end()), twins.end());
+  return twins;
+}
+
+TwinShrinks choose_twin_shrinks(const BallIndex& balls, const std::vector<SeedPair>& pairs) {
+  TwinShrinks out;
+  std::vector<Point> points;
+  std::vector<double> radii;
+  points.reserve(2 * pairs.size());
+  radii.reserve(2 * pairs.size());
+  for (const SeedPair& pair : pairs) {
+    points.insert(points.end(), pair.points.begin(), pair.points.end());
+    radii.insert(radii.end(), 2, mean_radius(balls, pair));
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> twins = twin_pairs(points, radii);
+  // The two points of one pair lie on either side of the surface, never twins but of a
+  // degenerate triplet, which the pair's own seeds settle.
+  std::erase_if(twins, [](const auto& t) { return t.first / 2 == t.second / 2; });
   out.twins = twins.size();
   BallShrinkRequests requests;
   for (const auto& [i, j] : twins) {

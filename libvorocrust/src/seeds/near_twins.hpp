@@ -15,6 +15,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "refinement/ball_index.hpp"
@@ -25,6 +27,11 @@ namespace vorocrust {
 
 // Points of two seed pairs nearer each other than this, in their triplets' mean radius, are twins.
 inline constexpr double kTwin = 1e-4;
+
+// The pairs (i < j) of `points` nearer each other than kTwin times the radius of either (a pair
+// counts when either point reaches the other), ascending.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> twin_pairs(const std::vector<Point>& points,
+                                                                 const std::vector<double>& radii);
 
 struct TwinShrinks {
   std::size_t twins = 0;  // pairs of points of different seed pairs nearer than kTwin radii

@@ -60,6 +60,12 @@ void triplets_of(const BallIndex& balls, std::uint32_t p, std::vector<std::uint3
 
 }  // namespace
 
+double mean_radius(const BallIndex& balls, const SeedPair& pair) {
+  double r = 0;
+  for (std::uint32_t b : pair.balls) r += balls[b].radius / 3;
+  return r;
+}
+
 SeedPairs find_seed_pairs(const BallIndex& balls) {
   // Fixed chunks, concatenated in order: the result does not depend on the thread count.
   constexpr std::size_t kChunk = 256;

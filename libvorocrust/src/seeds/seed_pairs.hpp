@@ -15,6 +15,10 @@ struct SeedPair {
   std::array<Point, 2> points;         // points[0] on the side the triangle of the centres faces
 };
 
+// The mean radius of a pair's triplet: the size its seeds carry, and the scale near twins are
+// measured in.
+double mean_radius(const BallIndex& balls, const SeedPair& pair);
+
 // A triplet with exactly one of its two points inside a fourth ball.
 struct HalfCoveredPair {
   SeedPair pair;

@@ -1,12 +1,10 @@
 // Surface seeds and the output surface (paper 2.4).
 #include "seeds/surface_seeds.hpp"
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 
-#include "geometry/point_cloud.hpp"
 #include "seeds/near_twins.hpp"
 
 namespace vorocrust {
@@ -18,20 +16,18 @@ namespace {
 // moves the cells' boundary off their pairs' facets by about that much. Cells of seeds so near
 // may not assemble otherwise (cgal_bones: two seeds 4.2e-5 radii apart).
 
-// Marks each seed with a seed of its region before it within kTwin of its radius.
+// Marks the later seed of each pair of twins of one region.
 std::vector<char> later_twins(const std::vector<Seed>& seeds) {
+  std::vector<Point> positions(seeds.size());
+  std::vector<double> radii(seeds.size());
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    positions[i] = seeds[i].position;
+    radii[i] = seeds[i].radius;
+  }
   std::vector<char> twin(seeds.size(), 0);
-  if (seeds.empty()) return twin;
-  const SeedCloud cloud{&seeds};
-  const StaticKdTree<SeedCloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 1024), [&](const auto& range) {
-    std::vector<std::uint32_t> near;
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      const Seed& s = seeds[i];
-      points_within(tree, s.position, kTwin * s.radius * kTwin * s.radius, near);
-      twin[i] = std::any_of(near.begin(), near.end(), [&](std::uint32_t j) { return j < i && seeds[j].region == s.region; });
-    }
-  });
+  for (const auto& [i, j] : twin_pairs(positions, radii)) {
+    if (seeds[i].region == seeds[j].region) twin[j] = 1;
+  }
   return twin;
 }
 
@@ -44,8 +40,7 @@ SurfaceSeeds surface_seeds(const BallIndex& balls, const std::vector<SeedPair>& 
   // the first face is near and met at a steep angle.
   tbb::parallel_for(std::size_t{0}, pairs.size(), [&](std::size_t i) {
     const SeedPair& pair = pairs[i];
-    double radius = 0;
-    for (std::uint32_t b : pair.balls) radius += balls[b].radius / 3;
+    const double radius = mean_radius(balls, pair);
     for (int k = 0; k < 2; ++k) {
       const Point& p = pair.points[k];
       out.seeds[2 * i + k] = {p, regions.region_of(p, pair.points[1 - k] - p), radius, SeedKind::Surface};
