@@ -1,6 +1,8 @@
 // The seeds that repair the cells: splits of cells too long, and seeds for highly skew faces.
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include "cells/repair_seeds.hpp"
 #include "interior/top_of_cube.hpp"
 
@@ -10,13 +12,14 @@ namespace {
 using test::kRadius;
 using test::TopOfCube;
 
-// One cell of the inside too long: its seed and centroid.
+// One cell of the inside too long: its seed, centroid and far tip (by default at the centroid,
+// which leaves the split no second place to try).
 struct OneCell {
   std::vector<Seed> seeds;
   std::vector<cells::LongCell> long_cells;
-  OneCell(const Point& site, const Point& centroid) {
+  OneCell(const Point& site, const Point& centroid, const std::optional<Point>& tip = std::nullopt) {
     seeds.push_back(Seed{site, kInsideRegion, 0.1, SeedKind::Cap});
-    long_cells.push_back({0, centroid});
+    long_cells.push_back({0, centroid, tip.value_or(centroid)});
   }
   std::vector<Seed> splits(const TopOfCube& cube, const std::vector<Seed>& placed = {}) const {
     return aspect_split_seeds(long_cells, seeds, cube.balls, RegionLocator(cube.surface), placed);
@@ -47,6 +50,20 @@ TEST(AspectSplitSeeds, ACentroidInABallIsPushedOutOrTheCellKeepsItsShape) {
   EXPECT_NEAR((pushed[0].position - Point(0, 0, 1 - 1.15 * kRadius)).norm(), 0, 1e-9);
   EXPECT_TRUE(OneCell(Point(0, 0, 0.79), Point(0, 0, 0.85)).splits(cube).empty());
   EXPECT_TRUE(OneCell(Point(0.5, 0, 0.9), Point(0.5, 0, 1.1)).splits(cube).empty());
+}
+
+// A cell whose centroid lies in a ball, pushed out of which it would be farther from the centroid
+// than the seed is. The split
+// goes halfway on to the cell's far tip, clear of the ball.
+TEST(AspectSplitSeeds, ACentroidPushedPastTheSeedGivesWayToAPointHalfwayToTheTip) {
+  TopOfCube cube;
+  cube.ball(0);
+  const Point site(0, 0, 0.79), centroid(0.03, 0, 0.88), tip(0.45, 0, 0.85);
+  ASSERT_TRUE(OneCell(site, centroid).splits(cube).empty());
+  const std::vector<Seed> splits = OneCell(site, centroid, tip).splits(cube);
+  ASSERT_EQ(splits.size(), 1u);
+  EXPECT_EQ(splits[0].position, Point((centroid + tip) / 2));
+  EXPECT_NEAR(splits[0].radius, (splits[0].position - site).norm(), 1e-12);
 }
 
 // A small skew face between two seeds of the inside just below a large ball, 1.02 of its radius

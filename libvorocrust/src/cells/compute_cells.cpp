@@ -359,7 +359,11 @@ std::vector<LongCell> GrowingCells::long_cells(double bound) {
   std::fill(ratio_stale_.begin(), ratio_stale_.end(), 0);
   std::vector<LongCell> out;
   for (std::size_t c = 0; c < raw_.size(); ++c) {
-    if (aspect_ratio_[c] > bound) out.push_back({cell_seeds_[c], frame_.centre + frame_.scale * centroid_of(raw_[c])});
+    if (!(aspect_ratio_[c] > bound)) continue;
+    const Point& seed = frame_.normalized[cell_seeds_[c]];
+    const auto farther = [&](const Point& a, const Point& b) { return (a - seed).squaredNorm() < (b - seed).squaredNorm(); };
+    const Point& tip = *std::max_element(raw_[c].vertices.begin(), raw_[c].vertices.end(), farther);
+    out.push_back({cell_seeds_[c], frame_.centre + frame_.scale * centroid_of(raw_[c]), frame_.centre + frame_.scale * tip});
   }
   return out;
 }

@@ -41,6 +41,7 @@ struct CutFace {
 struct LongCell {
   Index seed = 0;
   Point centroid = Point::Zero();
+  Point tip = Point::Zero();  // the cell's vertex farthest from its seed
 };
 
 class GrowingCells {

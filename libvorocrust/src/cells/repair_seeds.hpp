@@ -30,8 +30,10 @@ class RegionLocator;
 // centroid than the cell's seed does and in the cell's material, clear of `placed` (the seeds on
 // spheres and the repairs). It halves a spindle: a seed on a sphere beside others of its material
 // has a cell from the ball's centre deep into the interior, which no interior seed reaches within
-// the balls' clearance. A cell thinner than the balls beside it, as in a thin wall between two
-// sheets, has its centroid inside them and keeps its shape.
+// the balls' clearance. Where the centroid so pushed would lie no nearer it than the seed, the
+// point halfway from the centroid to the cell's vertex farthest from the seed is tried the same
+// way. A cell thinner than the balls beside it, as in a thin wall between two sheets, has both
+// inside them and keeps its shape.
 std::vector<Seed> aspect_split_seeds(const std::vector<cells::LongCell>& long_cells, const std::vector<Seed>& seeds,
                                      const BallIndex& balls, const RegionLocator& regions,
                                      const std::vector<Seed>& placed);
