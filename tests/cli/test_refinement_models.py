@@ -32,7 +32,11 @@ class RefinementMeetsTheBallConditions(unittest.TestCase):
                            capture_output=True, text=True, timeout=1200)
         self.assertEqual(r.returncode, 0, r.stderr)
         with open(os.path.join(out, "report.json")) as f:
-            return json.load(f)["features"]
+            report = json.load(f)
+        # No piece of the surface was given up bare at the deepest subdivision.
+        self.assertEqual(report["refinement"]["bare_at_deepest"],
+                         {"pieces": 0, "crease_length": 0, "patch_area": 0})
+        return report["features"]
 
     def assert_conditions_hold(self, surface, out, *options):
         check = subprocess.run([BINARY, "check-balls", *options, surface, os.path.join(out, "balls.csv")],

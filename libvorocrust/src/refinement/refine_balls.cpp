@@ -526,6 +526,7 @@ void BallRefinement::Impl::throw_darts(StratumType type, const std::vector<Subfa
 Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool last_level, const LostRegions& lost) {
   struct Outcome {
     std::uint8_t kept = 0;  // bit k: child k stays
+    bool abandoned = false;  // at the last level: the piece itself is not covered
     std::vector<Shrink> violations;
     std::vector<std::uint32_t> reaching;  // the kept children's balls, one after the other
     std::array<std::uint32_t, 4> reaching_count{};
@@ -544,7 +545,15 @@ Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool la
     std::vector<Candidate> candidates;
     std::vector<CoverBall> cover;
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      if (last_level) break;
+      if (last_level) {
+        // Split no further: the piece is counted if it is still bare.
+        const Subface& piece = pool.pieces[i];
+        if (!(piece.measure() > 0) || !lost.meets(piece)) continue;
+        reaching(pool, i, fresh, found);
+        classify(type, piece, found, candidates);
+        outcomes[i].abandoned = !covers(piece, candidates, cover);
+        continue;
+      }
       const auto children = pool.pieces[i].split();
       std::uint8_t wanted = 0;  // children of some size that meet a region given up
       for (std::size_t k = 0; k < children.size(); ++k) {
@@ -580,6 +589,10 @@ Pool BallRefinement::Impl::subdivide(StratumType type, const Pool& pool, bool la
   for (std::size_t i = 0; i < pool.pieces.size(); ++i) {
     const Outcome& outcome = outcomes[i];
     for (const Shrink& v : outcome.violations) shrink(v.ball, v.radius, Reason::C1);
+    if (outcome.abandoned) {
+      ++stats_.bare_pieces;
+      stats_.bare_measure[pool.pieces[i].is_segment() ? 0 : 1] += pool.pieces[i].measure();
+    }
     if (outcome.kept == 0) continue;
     const auto children = pool.pieces[i].split();
     next.reaching.insert(next.reaching.end(), outcome.reaching.begin(), outcome.reaching.end());

@@ -362,6 +362,7 @@ std::string run_report_json(const RunReport& report, int indent) {
         {"skinny_triangle_shrinks", r.skinny_triangle_shrinks},
         {"rounds", r.rounds},
         {"boundary_samples", r.boundary_samples},
+        {"bare_at_deepest", {{"pieces", r.bare_pieces}, {"crease_length", r.bare_measure[0]}, {"patch_area", r.bare_measure[1]}}},
         {"converged", r.converged}};
   }
   if (report.result && !report.result->slivers.iterations.empty()) {
