@@ -31,6 +31,9 @@ constexpr double kLocalCube = 64;
 // local scale: Voro++'s plane tolerance there stands for more than 1e-8 of the cell's size.
 // (Voro++ keeps vertices at twice their coordinates, and so the squared radius at four times.)
 constexpr double kTinyCell2 = 4.0 / 4096;
+// Cubes a cell Voro++ leaves broken is cut from, each this much bigger than the last.
+constexpr int kWholeTries = 4;
+constexpr double kWholeGrowth = 1.375;
 
 using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
 
@@ -122,8 +125,20 @@ class CellCutter {
     return std::none_of(out.neighbours.begin(), out.neighbours.end(), [](std::int32_t n) { return n < 0; });
   }
 
-  // The cell cut from the cube of half-side `half_side` in units of `scale`.
+  // The cell cut from the cube of half-side `half_side` in units of `scale`. Where Voro++ leaves
+  // the cell broken (edges_consistent), the same cuts from a bigger cube meet other vertices.
   void cut_from(Index seed, double half_side, double scale, RawCell& out) {
+    for (int attempt = 0; attempt < kWholeTries; ++attempt, half_side *= kWholeGrowth) {
+      if (cut_once(seed, half_side, scale, out)) return;
+    }
+    throw Error(Error::Kind::InvalidGeometry,
+                "Voro++ cannot cut the cell of seed " + std::to_string(seed) + " whole from " +
+                    std::to_string(kWholeTries) + " cubes: its neighbours are nearly cospherical; another --seed "
+                    "places them differently");
+  }
+
+  // cut_from's one try; false when Voro++'s cell is not whole.
+  bool cut_once(Index seed, double half_side, double scale, RawCell& out) {
     const Point& p = positions_[seed];
     const double scale2 = scale * scale, inverse = 1 / scale;  // powers of two: exact
     cell_.init(-half_side, half_side, -half_side, half_side, -half_side, half_side);
@@ -179,9 +194,10 @@ class CellCutter {
       more = cut_in_order(order_) && shell.within() < positions_.size();
       lower = upper;
     }
-    extract(cell_, p, out, scratch_, scale);
+    if (!extract(cell_, p, out, scratch_, scale)) return false;
     out.reach2 = std::max(reach2, radius2_ * scale2);
     if (scale == 1) guess2_ = radius2_;
+    return true;
   }
 
   // For a cell with no cell cut before it: just beyond the squared distance of the

@@ -82,8 +82,7 @@ class LocalContainer {
     voro::particle_order order;
     con.put(order, static_cast<int>(seed), 0, 0, 0);
     if (order.op == order.o || !con.compute_cell(cell_, order.o[0], order.o[1])) return false;
-    extract(cell_, p, out, scratch_, scale);
-    return true;
+    return extract(cell_, p, out, scratch_, scale);
   }
 
   const std::vector<Point>& positions_;

@@ -59,10 +59,26 @@ void canonicalize(RawCell& cell, Scratch& scratch) {
   cell.cycles.swap(cycles);
 }
 
-// A Voro++ cell of the seed at p, computed `scale` times as small, as a RawCell.
 }  // namespace
 
-void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cell, Scratch& scratch, double scale) {
+bool edges_consistent(const voro::voronoicell_base& cell) {
+  if (cell.p < 4) return false;
+  for (int i = 0; i < cell.p; ++i) {
+    const int order = cell.nu[i];
+    if (order < 3 || cell.ed[i] == nullptr) return false;
+    for (int j = 0; j < order; ++j) {
+      const int k = cell.ed[i][j], back = cell.ed[i][order + j];
+      if (k < 0 || k >= cell.p || back < 0 || back >= cell.nu[k] || cell.ed[k][back] != i ||
+          cell.ed[k][cell.nu[k] + back] != j) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cell, Scratch& scratch, double scale) {
+  if (!edges_consistent(voro_cell)) return false;
   voro_cell.vertices(0, 0, 0, scratch.xyz);
   for (std::size_t k = 0; k < scratch.xyz.size(); ++k) scratch.xyz[k] = p[static_cast<Eigen::Index>(k % 3)] + scale * scratch.xyz[k];
   voro_cell.face_vertices(scratch.faces);
@@ -93,6 +109,7 @@ void extract(voro::voronoicell_neighbor& voro_cell, const Point& p, RawCell& cel
       cell.shortest_edge2 = std::min(cell.shortest_edge2, (u - w).squaredNorm() / unit2);
     }
   }
+  return true;
 }
 
 }  // namespace vorocrust::cells
