@@ -489,8 +489,8 @@ VoronoiMesh GrowingCells::assemble(Cell&& cell) const {
       cell_of_seed[cell_seeds[i]] = static_cast<std::int32_t>(i);
     });
     // Where cells disagree after welding, nearly cospherical seeds left a vertex split on one side
-    // only, or round-off a tiny feature: those cells and their neighbours are cut again, first in
-    // Voro++'s containers, then from bigger initial cubes, and their tolerance rises, to 1e-6 of
+    // only, or round-off a tiny feature: those cells and their neighbours are cut again, at their
+    // local scale and from bigger initial cubes, and their tolerance rises, to 1e-6 of
     // the empty-sphere radius at most. Only theirs: on cgal_bones, three cells that needed 1e-6
     // had it raised for all, and a thousand tiny faces elsewhere turned by up to 5 degrees from
     // their seed links.
@@ -513,20 +513,7 @@ VoronoiMesh GrowingCells::assemble(Cell&& cell) const {
     const auto cut_again = [&](const std::vector<char>& failed, int attempt) {
       const std::vector<std::size_t> which = cells_and_neighbours(failed);
       for (std::size_t c : which) tolerance[c] = std::max(tolerance[c], kTolerances[attempt + 1]);
-      if (attempt == 0) {
-        std::vector<Index> subset(which.size());
-        for (std::size_t k = 0; k < which.size(); ++k) subset[k] = cell_seeds[which[k]];
-        std::vector<char> lost;
-        std::vector<RawCell> redone = compute_voronoi_cells_in_containers(frame.normalized, subset, seed_tree(), lost);
-        for (std::size_t k = 0; k < which.size(); ++k) {
-          if (!lost[k]) raw[which[k]] = std::move(redone[k]);  // else the cell as cut alone stays
-        }
-        recompute_voronoi_cells(frame.normalized, cell_seeds,
-                                cells_holding_others(frame.normalized, cell_seeds, raw, which, &seed_tree()), 1, raw,
-                                &seed_tree());
-      } else {
-        recompute_voronoi_cells(frame.normalized, cell_seeds, which, attempt, raw, &seed_tree());
-      }
+      recompute_voronoi_cells(frame.normalized, cell_seeds, which, attempt + 1, raw, &seed_tree());
       return which;
     };
     // Which of the cells `which` and their neighbours still disagree among themselves, welded and

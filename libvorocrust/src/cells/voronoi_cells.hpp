@@ -64,9 +64,11 @@ struct SeedTree {
 std::vector<RawCell> compute_voronoi_cells(const std::vector<Point>& positions, const std::vector<Index>& cell_seeds);
 
 // The same cells from Voro++'s containers, one per cell holding the seeds within its reach
-// (widened until every vertex's empty sphere lies within it). Slower than cutting, but Voro++
-// cuts there in another order: the assembly's first fallback for cells at odds with their
-// neighbours. Where Voro++ gives no cell (round-off can cut a cell away among seeds that nearly
+// (widened until every vertex's empty sphere lies within it): Voro++'s own way, against which the
+// tests check the cutter. It was the assembly's first fallback for cells at odds with their
+// neighbours, until on igl_camelhead Voro++ left cells broken there (raw_cell_extract.hpp) and then
+// faulted inside its own cutting (seed 595561): the cutter, nearest seed first, never has. Where
+// Voro++ gives no cell (round-off can cut a cell away among seeds that nearly
 // coincide: two surface seeds of cgal_bones 4e-5 radii apart) or one that keeps a wall of its
 // container, lost[k] is set and cells[k] is not to be used (empty, or the cell with the wall).
 // `tree`: the positions' SeedTree.
