@@ -6,6 +6,7 @@
 #include "cells_command.hpp"
 #include "check_balls_command.hpp"
 #include "commands.hpp"
+#include "mesh2d_command.hpp"
 #include "exit_codes.hpp"
 #include "quality_command.hpp"
 #include "vorocrust/error.hpp"
@@ -50,6 +51,9 @@ int main(int argc, char** argv) {
       ->required();
   mesh.options.add(*mesh_cmd);
   mesh_cmd->add_flag("-q,--quiet", mesh.quiet, "Print nothing but errors");
+
+  Mesh2dArgs mesh2d;
+  CLI::App* mesh2d_cmd = add_mesh2d_command(app, mesh2d);
 
   bool options_json_wanted = false;
   CLI::App* options_cmd = app.add_subcommand(
@@ -136,6 +140,10 @@ int main(int argc, char** argv) {
     if (*check_cmd) return run_check_balls(check);
     if (*quality_cmd) return run_quality(quality);
     if (*cells_cmd) return run_cells(cells);
+    if (*mesh2d_cmd) {
+      mesh2d.command_line.assign(argv, argv + argc);
+      return run_mesh2d(mesh2d);
+    }
     mesh.command_line.assign(argv, argv + argc);
     return run_mesh(mesh);
   } catch (const Error& e) {

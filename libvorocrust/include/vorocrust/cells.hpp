@@ -69,6 +69,9 @@ struct VOROCRUST_API VoronoiMesh {
   // The regions' names by label, as the input named them (vorocrust/regions.hpp); empty when the
   // seeds came without names, and the writers then say "outside" (0) and "material<N>".
   std::vector<std::string> region_names;
+  // A 2D mesh extruded one cell thick (plane.hpp): the region across its front and back faces,
+  // an `empty` patch in OpenFOAM's case; kNoCell for a 3D mesh.
+  std::int32_t empty_region = kNoCell;
 };
 
 VOROCRUST_API VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options = {});

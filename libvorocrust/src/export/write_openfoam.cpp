@@ -34,6 +34,7 @@ std::string header(const char* cls, const char* location, const char* object, co
 struct Patch {
   std::string name;
   std::size_t start = 0, size = 0;
+  bool empty = false;  // the front and back of an extruded 2D mesh
 };
 
 // Faces in OpenFOAM's order, and the patches of the boundary ones.
@@ -59,7 +60,8 @@ Ordering order_faces(const VoronoiMesh& mesh, const io::RegionWords& word) {
     if (face.neighbour == kNoCell) by_pair[{face.regions.back, face.regions.front}].push_back(f);
   }
   for (const auto& [pair, faces] : by_pair) {
-    o.patches.push_back({word(pair.first) + "_to_" + word(pair.second), o.faces.size(), faces.size()});
+    o.patches.push_back({word(pair.first) + "_to_" + word(pair.second), o.faces.size(), faces.size(),
+                         pair.second == mesh.empty_region});
     o.faces.insert(o.faces.end(), faces.begin(), faces.end());
   }
   return o;
@@ -140,7 +142,7 @@ void write_boundary_and_zones(const VoronoiMesh& mesh, const Ordering& o, const 
   std::string text = header("polyBoundaryMesh", "constant/polyMesh", "boundary");
   append(text, "%zu\n(\n", o.patches.size());
   for (const Patch& p : o.patches) {
-    text += "    " + p.name + "\n    {\n        type            patch;\n";
+    text += "    " + p.name + "\n    {\n        type            " + (p.empty ? "empty" : "patch") + ";\n";
     append(text, "        nFaces          %zu;\n        startFace       %zu;\n    }\n", p.size, p.start);
   }
   text += ")\n";

@@ -50,6 +50,7 @@ void write_pflotran(const VoronoiMesh& mesh, const std::filesystem::path& folder
     const FaceGeometry g = face_geometry(mesh, f);
     std::string* line = &text;
     if (face.neighbour == kNoCell) {
+      if (face.regions.front == mesh.empty_region) continue;  // a 2D slab's front and back: no flow
       auto& [count, list] = patches[{face.regions.back, face.regions.front}];
       ++count;
       line = &list;

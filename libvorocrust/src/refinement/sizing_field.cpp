@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "io/byte_source.hpp"
 #include "geometry/point_cloud.hpp"
@@ -23,15 +24,20 @@ struct SizingField::Samples {
 
 SizingField::SizingField(double max_size) : max_size_(max_size) {}
 
-SizingField::SizingField(double max_size, const std::filesystem::path& sizing_file)
+SizingField::SizingField(double max_size, const std::filesystem::path& sizing_file, bool planar)
     : max_size_(max_size), samples_(std::make_unique<Samples>()) {
   const std::string bytes = io::read_file_bytes(sizing_file);
   io::LineCursor in(bytes, sizing_file.string());
   while (in.next_nonempty()) {
     const double x = in.require_double("an x coordinate");
     const double y = in.require_double("a y coordinate");
-    const double z = in.require_double("a z coordinate");
-    const double size = in.require_double("a size");
+    double z = in.require_double(planar ? "a size" : "a z coordinate");
+    double size = 0;
+    if (const std::string_view last = in.token(); planar && last.empty()) {
+      size = std::exchange(z, 0.0);
+    } else if (last.empty() || !io::parse_double(last, size)) {
+      in.fail(Error::Kind::UnreadableInput, "expected a size, found " + (last.empty() ? std::string("nothing") : io::quote(last)));
+    }
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) {
       in.fail(Error::Kind::UnreadableInput, "sizing point is not finite");
     }

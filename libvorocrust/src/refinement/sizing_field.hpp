@@ -18,7 +18,8 @@ class SizingField {
  public:
   explicit SizingField(double max_size = std::numeric_limits<double>::infinity());
   // Throws Error(UnreadableInput) naming the line of a malformed entry or a size that is not positive.
-  SizingField(double max_size, const std::filesystem::path& sizing_file);
+  // `planar`: lines may also be "x y size" (2D domains, z = 0).
+  SizingField(double max_size, const std::filesystem::path& sizing_file, bool planar = false);
   ~SizingField();
   SizingField(SizingField&&) noexcept;
 

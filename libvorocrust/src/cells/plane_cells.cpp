@@ -1,0 +1,230 @@
+// Voronoi cells in the plane by clipping, and their assembly into one mesh (2D domains).
+#include "cells/plane_cells.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include "core/union_find.hpp"
+#include "geometry/plane_tree.hpp"
+
+namespace vorocrust::cells {
+
+namespace {
+
+// The part of `cell` on seed p's side of the bisector of p and q; the new edge lies across `label`.
+void clip(PlanePolygon& cell, const Point2& p, const Point2& q, std::int64_t label, PlanePolygon& scratch) {
+  const Point2 n = q - p, m = (p + q) / 2;
+  const std::size_t count = cell.vertices.size();
+  std::array<double, 64> small;
+  std::vector<double> big;
+  double* side = small.data();
+  if (count > small.size()) {
+    big.resize(count);
+    side = big.data();
+  }
+  bool any_out = false;
+  for (std::size_t k = 0; k < count; ++k) {
+    side[k] = (cell.vertices[k] - m).dot(n);
+    any_out |= side[k] > 0;
+  }
+  if (!any_out) return;
+  scratch.vertices.clear();
+  scratch.across.clear();
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t next = (k + 1) % count;
+    const bool in = side[k] <= 0, next_in = side[next] <= 0;
+    if (in) {
+      scratch.vertices.push_back(cell.vertices[k]);
+      scratch.across.push_back(cell.across[k]);
+    }
+    if (in == next_in) continue;
+    // Leaving, the bisector's edge starts at the exit point; entering, the rest of edge k starts
+    // at the entry point. A vertex on the bisector is its own exit (or entry) point.
+    if (in && side[k] == 0) {
+      scratch.across.back() = label;
+      continue;
+    }
+    if (!in && side[next] == 0) continue;
+    const double t = side[k] / (side[k] - side[next]);
+    scratch.vertices.push_back(cell.vertices[k] + t * (cell.vertices[next] - cell.vertices[k]));
+    scratch.across.push_back(in ? label : cell.across[k]);
+  }
+  std::swap(cell, scratch);
+}
+
+}  // namespace
+
+double polygon_area(const std::vector<Point2>& ring, Point2* centroid) {
+  double twice = 0;
+  Point2 c = Point2::Zero();
+  const Point2 o = ring.empty() ? Point2::Zero() : ring[0];
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const Point2 a = ring[k] - o, b = ring[(k + 1) % ring.size()] - o;
+    const double cross = a.x() * b.y() - a.y() * b.x();
+    twice += cross;
+    c += cross * (a + b);
+  }
+  if (centroid) *centroid = twice != 0 ? Point2(o + c / (3 * twice)) : o;
+  return twice / 2;
+}
+
+std::vector<PlanePolygon> plane_voronoi_cells(const std::vector<Point2>& seeds, const Eigen::AlignedBox2d& frame) {
+  const geometry::PlaneTree tree(seeds);
+  std::vector<PlanePolygon> cells(seeds.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, seeds.size(), 256), [&](const tbb::blocked_range<std::size_t>& range) {
+    std::vector<std::uint32_t> index;
+    std::vector<double> squared;
+    PlanePolygon scratch;
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      PlanePolygon& cell = cells[i];
+      const Point2 lo = frame.min(), hi = frame.max();
+      cell.vertices = {lo, Point2(hi.x(), lo.y()), hi, Point2(lo.x(), hi.y())};
+      cell.across = {-1, -2, -3, -4};  // bottom, right, top, left
+      const Point2& p = seeds[i];
+      std::size_t done = 0;
+      for (std::size_t k = 16;; k *= 2) {
+        k = std::min(k, seeds.size());
+        index.resize(k);
+        squared.resize(k);
+        const std::size_t found = tree.nearest(p, k, index.data(), squared.data());
+        for (std::size_t n = done; n < found; ++n) {
+          if (index[n] != i) clip(cell, p, seeds[index[n]], index[n], scratch);
+        }
+        done = found;
+        double reach = 0;
+        for (const Point2& v : cell.vertices) reach = std::max(reach, (v - p).squaredNorm());
+        // A seed farther than twice the cell's reach cannot cut it.
+        if (found == seeds.size() || squared[found - 1] > 4 * reach) break;
+      }
+    }
+  });
+  return cells;
+}
+
+PlaneAssembly weld_plane_cells(const std::vector<PlanePolygon>& cells, const std::vector<Point2>& seeds,
+                               const std::vector<PlaneCircle>& circles, double tolerance) {
+  // Every vertex named by its three seeds.
+  struct Corner {
+    std::array<std::int64_t, 3> key;
+    std::uint32_t cell, k;
+  };
+  std::vector<Corner> corners;
+  std::vector<std::size_t> offset(cells.size() + 1, 0);
+  for (std::size_t i = 0; i < cells.size(); ++i) offset[i + 1] = offset[i] + cells[i].vertices.size();
+  corners.resize(offset.back());
+  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t i) {
+    const PlanePolygon& c = cells[i];
+    const std::size_t n = c.vertices.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      std::array<std::int64_t, 3> key{static_cast<std::int64_t>(i), c.across[(k + n - 1) % n], c.across[k]};
+      std::sort(key.begin(), key.end());
+      corners[offset[i] + k] = {key, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(k)};
+    }
+  });
+  tbb::parallel_sort(corners.begin(), corners.end(), [](const Corner& a, const Corner& b) {
+    return std::tie(a.key, a.cell, a.k) < std::tie(b.key, b.cell, b.k);
+  });
+  std::vector<Index> vertex_of(corners.size());
+  std::vector<Point2> points;
+  for (std::size_t c = 0; c < corners.size(); ++c) {
+    if (c == 0 || corners[c].key != corners[c - 1].key) points.push_back(cells[corners[c].cell].vertices[corners[c].k]);
+    vertex_of[offset[corners[c].cell] + corners[c].k] = static_cast<Index>(points.size() - 1);
+  }
+  // The centres of the circles: the seeds on each make it one vertex.
+  {
+    std::vector<Point2> centres;
+    for (const PlaneCircle& c : circles) centres.push_back(c.centre);
+    const geometry::PlaneTree tree(centres);
+    tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t v) {
+      std::uint32_t nearest;
+      double squared;
+      if (tree.nearest(points[v], 1, &nearest, &squared) == 1 &&
+          std::sqrt(squared) <= std::max(tolerance, 1e-7 * circles[nearest].radius)) {
+        points[v] = centres[nearest];
+      }
+    });
+  }
+  // Points within the tolerance of each other are one (the seeds of a degenerate vertex name it
+  // by different triples in different cells), and so are the ends of shorter edges.
+  UnionFind same(points.size());
+  {
+    const auto cell_of = [&](const Point2& p) {
+      return std::pair<std::int64_t, std::int64_t>(static_cast<std::int64_t>(std::floor(p.x() / tolerance)),
+                                                   static_cast<std::int64_t>(std::floor(p.y() / tolerance)));
+    };
+    std::map<std::pair<std::int64_t, std::int64_t>, std::vector<Index>> grid;
+    for (Index v = 0; v < points.size(); ++v) grid[cell_of(points[v])].push_back(v);
+    for (const auto& [cell, here] : grid) {
+      for (std::int64_t i = cell.first - 1; i <= cell.first + 1; ++i) {
+        for (std::int64_t j = cell.second - 1; j <= cell.second + 1; ++j) {
+          const auto it = grid.find({i, j});
+          if (it == grid.end()) continue;
+          for (Index a : here) {
+            for (Index b : it->second) {
+              if (a < b && (points[a] - points[b]).norm() <= tolerance) same.unite(a, b);
+            }
+          }
+        }
+      }
+    }
+  }
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const std::size_t n = cells[i].vertices.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Index a = vertex_of[offset[i] + k], b = vertex_of[offset[i] + (k + 1) % n];
+      if ((points[a] - points[b]).norm() <= tolerance) same.unite(a, b);
+    }
+  }
+  PlaneAssembly out;
+  std::vector<Index> renumber(points.size(), static_cast<Index>(-1));
+  for (Index v = 0; v < points.size(); ++v) {
+    const Index r = static_cast<Index>(same.find(v));
+    if (renumber[r] == static_cast<Index>(-1)) {
+      renumber[r] = static_cast<Index>(out.points.size());
+      out.points.push_back(points[r]);
+    }
+    renumber[v] = renumber[r];
+  }
+  out.polygons.resize(cells.size());
+  out.across.resize(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const std::size_t n = cells[i].vertices.size();
+    std::vector<Index>& ring = out.polygons[i];
+    std::vector<std::int64_t>& across = out.across[i];
+    for (std::size_t k = 0; k < n; ++k) {
+      const Index a = renumber[vertex_of[offset[i] + k]], b = renumber[vertex_of[offset[i] + (k + 1) % n]];
+      if (a == b) continue;  // a collapsed edge
+      ring.push_back(a);
+      across.push_back(cells[i].across[k]);
+    }
+  }
+  // Each edge between two cells is the same in both, run the other way.
+  std::map<std::pair<Index, Index>, std::int64_t> edge_cell;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const std::size_t n = out.polygons[i].size();
+    if (n < 3) {
+      throw Error(Error::Kind::InvalidGeometry, "the cell of seed " + std::to_string(i) + " at (" + std::to_string(seeds[i].x()) + ", " +
+                                                    std::to_string(seeds[i].y()) + ") collapses when its vertices are welded");
+    }
+    for (std::size_t k = 0; k < n; ++k) edge_cell[{out.polygons[i][k], out.polygons[i][(k + 1) % n]}] = static_cast<std::int64_t>(i);
+  }
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const std::size_t n = out.polygons[i].size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::int64_t j = out.across[i][k];
+      if (j < 0) continue;
+      const auto it = edge_cell.find({out.polygons[i][(k + 1) % n], out.polygons[i][k]});
+      if (it == edge_cell.end() || it->second != j) {
+        throw Error(Error::Kind::InvalidGeometry, "the cells of seeds " + std::to_string(i) + " and " + std::to_string(j) +
+                                                      " disagree on the edge between them after welding");
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace vorocrust::cells
