@@ -2,8 +2,9 @@
 #include "cells/plane_cells.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
-#include <map>
+#include <numeric>
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
@@ -106,7 +107,8 @@ std::vector<PlanePolygon> plane_voronoi_cells(const std::vector<Point2>& seeds, 
 }
 
 PlaneAssembly weld_plane_cells(const std::vector<PlanePolygon>& cells, const std::vector<Point2>& seeds,
-                               const std::vector<PlaneCircle>& circles, double tolerance) {
+                               const std::vector<PlaneCircle>& circles,
+                               const std::vector<std::array<std::int32_t, 2>>& on_circles, double tolerance) {
   // Every vertex named by its three seeds.
   struct Corner {
     std::array<std::int64_t, 3> key;
@@ -134,49 +136,39 @@ PlaneAssembly weld_plane_cells(const std::vector<PlanePolygon>& cells, const std
     if (c == 0 || corners[c].key != corners[c - 1].key) points.push_back(cells[corners[c].cell].vertices[corners[c].k]);
     vertex_of[offset[corners[c].cell] + corners[c].k] = static_cast<Index>(points.size() - 1);
   }
-  // The centres of the circles: the seeds on each make it one vertex.
-  {
-    std::vector<Point2> centres;
-    for (const PlaneCircle& c : circles) centres.push_back(c.centre);
-    const geometry::PlaneTree tree(centres);
-    tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t v) {
-      std::uint32_t nearest;
-      double squared;
-      if (tree.nearest(points[v], 1, &nearest, &squared) == 1 &&
-          std::sqrt(squared) <= std::max(tolerance, 1e-7 * circles[nearest].radius)) {
-        points[v] = centres[nearest];
-      }
-    });
-  }
-  // Points within the tolerance of each other are one (the seeds of a degenerate vertex name it
-  // by different triples in different cells), and so are the ends of shorter edges.
-  UnionFind same(points.size());
-  {
-    const auto cell_of = [&](const Point2& p) {
-      return std::pair<std::int64_t, std::int64_t>(static_cast<std::int64_t>(std::floor(p.x() / tolerance)),
-                                                   static_cast<std::int64_t>(std::floor(p.y() / tolerance)));
-    };
-    std::map<std::pair<std::int64_t, std::int64_t>, std::vector<Index>> grid;
-    for (Index v = 0; v < points.size(); ++v) grid[cell_of(points[v])].push_back(v);
-    for (const auto& [cell, here] : grid) {
-      for (std::int64_t i = cell.first - 1; i <= cell.first + 1; ++i) {
-        for (std::int64_t j = cell.second - 1; j <= cell.second + 1; ++j) {
-          const auto it = grid.find({i, j});
-          if (it == grid.end()) continue;
-          for (Index a : here) {
-            for (Index b : it->second) {
-              if (a < b && (points[a] - points[b]).norm() <= tolerance) same.unite(a, b);
-            }
-          }
-        }
+  // The centres of the circles: the seeds on each make it one vertex, which only the cells of
+  // those seeds have.
+  for (std::size_t i = 0; i < std::min(cells.size(), on_circles.size()); ++i) {
+    const std::size_t n = cells[i].vertices.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Index v = vertex_of[offset[i] + k];
+      for (const std::int32_t c : on_circles[i]) {
+        if (c < 0) continue;
+        const PlaneCircle& circle = circles[static_cast<std::size_t>(c)];
+        if ((cells[i].vertices[k] - circle.centre).norm() <= std::max(tolerance, 1e-7 * circle.radius)) points[v] = circle.centre;
       }
     }
   }
+  // Points within the tolerance of each other are one (the seeds of a degenerate vertex name it
+  // by different triples in different cells), and so are the ends of shorter edges. Points in
+  // order of x: each is compared with those after it up to the tolerance in x.
+  UnionFind same(points.size());
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const std::size_t n = cells[i].vertices.size();
     for (std::size_t k = 0; k < n; ++k) {
       const Index a = vertex_of[offset[i] + k], b = vertex_of[offset[i] + (k + 1) % n];
       if ((points[a] - points[b]).norm() <= tolerance) same.unite(a, b);
+    }
+  }
+  std::vector<Index> by_x(points.size());
+  std::iota(by_x.begin(), by_x.end(), Index{0});
+  tbb::parallel_sort(by_x.begin(), by_x.end(), [&](Index a, Index b) {
+    return std::tie(points[a].x(), a) < std::tie(points[b].x(), b);
+  });
+  for (std::size_t k = 0; k < by_x.size(); ++k) {
+    const Point2& p = points[by_x[k]];
+    for (std::size_t l = k + 1; l < by_x.size() && points[by_x[l]].x() - p.x() <= tolerance; ++l) {
+      if ((points[by_x[l]] - p).norm() <= tolerance) same.unite(by_x[k], by_x[l]);
     }
   }
   PlaneAssembly out;
@@ -203,26 +195,37 @@ PlaneAssembly weld_plane_cells(const std::vector<PlanePolygon>& cells, const std
     }
   }
   // Each edge between two cells is the same in both, run the other way.
-  std::map<std::pair<Index, Index>, std::int64_t> edge_cell;
   for (std::size_t i = 0; i < cells.size(); ++i) {
-    const std::size_t n = out.polygons[i].size();
-    if (n < 3) {
+    if (out.polygons[i].size() < 3) {
       throw Error(Error::Kind::InvalidGeometry, "the cell of seed " + std::to_string(i) + " at (" + std::to_string(seeds[i].x()) + ", " +
                                                     std::to_string(seeds[i].y()) + ") collapses when its vertices are welded");
     }
-    for (std::size_t k = 0; k < n; ++k) edge_cell[{out.polygons[i][k], out.polygons[i][(k + 1) % n]}] = static_cast<std::int64_t>(i);
   }
-  for (std::size_t i = 0; i < cells.size(); ++i) {
-    const std::size_t n = out.polygons[i].size();
+  std::atomic<std::int64_t> disagreeing{-1};
+  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t i) {
+    const std::vector<Index>& ring = out.polygons[i];
+    const std::size_t n = ring.size();
     for (std::size_t k = 0; k < n; ++k) {
       const std::int64_t j = out.across[i][k];
       if (j < 0) continue;
-      const auto it = edge_cell.find({out.polygons[i][(k + 1) % n], out.polygons[i][k]});
-      if (it == edge_cell.end() || it->second != j) {
-        throw Error(Error::Kind::InvalidGeometry, "the cells of seeds " + std::to_string(i) + " and " + std::to_string(j) +
-                                                      " disagree on the edge between them after welding");
+      const std::vector<Index>& other = out.polygons[static_cast<std::size_t>(j)];
+      const std::size_t m = other.size();
+      bool found = false;
+      for (std::size_t e = 0; e < m && !found; ++e) {
+        found = other[e] == ring[(k + 1) % n] && other[(e + 1) % m] == ring[k] &&
+                out.across[static_cast<std::size_t>(j)][e] == static_cast<std::int64_t>(i);
+      }
+      if (found) continue;
+      // The lowest such cell is named, whichever thread finds it.
+      std::int64_t seen = disagreeing.load();
+      while ((seen < 0 || static_cast<std::int64_t>(i) < seen) && !disagreeing.compare_exchange_weak(seen, static_cast<std::int64_t>(i))) {
       }
     }
+  });
+  if (const std::int64_t i = disagreeing; i >= 0) {
+    throw Error(Error::Kind::InvalidGeometry, "the cell of seed " + std::to_string(i) + " at (" + std::to_string(seeds[static_cast<std::size_t>(i)].x()) + ", " +
+                                                  std::to_string(seeds[static_cast<std::size_t>(i)].y()) +
+                                                  ") and a neighbour disagree on the edge between them after welding");
   }
   return out;
 }

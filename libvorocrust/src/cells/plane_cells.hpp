@@ -13,6 +13,7 @@
 // cells then disagree on an edge they share.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -35,8 +36,10 @@ struct PlaneAssembly {
   std::vector<std::vector<std::int64_t>> across;     // per seed, per edge
 };
 
+// `on_circles`: per seed, the circles it lies on (-1: none), for the first seeds (the boundary's).
 PlaneAssembly weld_plane_cells(const std::vector<PlanePolygon>& cells, const std::vector<Point2>& seeds,
-                               const std::vector<PlaneCircle>& circles, double tolerance);
+                               const std::vector<PlaneCircle>& circles,
+                               const std::vector<std::array<std::int32_t, 2>>& on_circles, double tolerance);
 
 // A polygon's area (positive counter-clockwise) and centroid.
 double polygon_area(const std::vector<Point2>& ring, Point2* centroid = nullptr);

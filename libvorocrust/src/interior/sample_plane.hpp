@@ -24,10 +24,12 @@ inline constexpr double kPlaneClearance = 1.3;
 
 class PlaneSpacing {
  public:
-  PlaneSpacing(const std::vector<PlaneCircle>& circles, const SizingField& sizing, double lipschitz, double largest);
+  // `frame`: where it is asked most, which a coarse grid of cells far from every circle covers.
+  PlaneSpacing(const std::vector<PlaneCircle>& circles, const SizingField& sizing, double lipschitz, double largest,
+               const Eigen::AlignedBox2d& frame);
   double operator()(const Point2& x) const;
-  // Whether x lies inside some circle scaled by `factor`.
-  bool in_circles(const Point2& x, double factor) const;
+  // Whether x lies inside some circle scaled by kPlaneClearance.
+  bool in_clearance(const Point2& x) const;
   double lipschitz() const;
 
  private:

@@ -62,7 +62,7 @@ void relax(std::vector<Seed>& seeds, std::size_t first_interior, const Eigen::Al
     for (std::size_t i = first_interior; i < seeds.size(); ++i) {
       Point2 centroid;
       cells::polygon_area(polygons[i].vertices, &centroid);
-      if (frame.contains(centroid) && !spacing.in_circles(centroid, interior::kPlaneClearance)) {
+      if (frame.contains(centroid) && !spacing.in_clearance(centroid)) {
         seeds[i].position = Point(centroid.x(), centroid.y(), 0);
       }
     }
@@ -195,7 +195,7 @@ PlaneMesh mesh_plane(const PlanarDomain& input, const PlaneOptions& options) {
   const double margin = std::max(0.05 * diagonal, 2 * widest);
   frame = Eigen::AlignedBox2d(frame.min() - Point2::Constant(margin), frame.max() + Point2::Constant(margin));
 
-  const interior::PlaneSpacing spacing(protection.circles, sizing, options.lipschitz, frame.diagonal().norm() / 8);
+  const interior::PlaneSpacing spacing(protection.circles, sizing, options.lipschitz, frame.diagonal().norm() / 8, frame);
   std::vector<double> radii;
   for (const PlaneCircle& c : protection.circles) radii.push_back(c.radius);
   std::nth_element(radii.begin(), radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2), radii.end());
@@ -212,7 +212,7 @@ PlaneMesh mesh_plane(const PlanarDomain& input, const PlaneOptions& options) {
   const std::vector<Point2> positions = positions_of(seeds);
   const cells::PlaneAssembly assembly = clock("cells", [&] {
     const std::vector<cells::PlanePolygon> polygons = cells::plane_voronoi_cells(positions, frame);
-    return cells::weld_plane_cells(polygons, positions, protection.circles, 1e-10 * frame.diagonal().norm());
+    return cells::weld_plane_cells(polygons, positions, protection.circles, boundary.on_circles, 1e-10 * frame.diagonal().norm());
   });
   const std::vector<std::int32_t> label = clock("regions", [&] {
     return label_regions(d, seeds, boundary.twin, assembly, protection.circles, features, mesh.region_names);

@@ -24,6 +24,8 @@ class SizingField {
   SizingField(SizingField&&) noexcept;
 
   double operator()(const Point& p) const;
+  // Whether the field is max_size everywhere (no sizing file).
+  bool uniform() const { return !samples_; }
 
  private:
   struct Samples;

@@ -41,6 +41,8 @@ PlaneBoundarySeeds circle_pairs(const refinement::PlaneProtection& protection) {
     }
     out.twin.push_back(first + 1);
     out.twin.push_back(first);
+    const std::array<std::int32_t, 2> both{static_cast<std::int32_t>(i), static_cast<std::int32_t>(j)};
+    out.on_circles.insert(out.on_circles.end(), {both, both});
   }
   std::vector<Point2> centres;
   double largest = 0;
@@ -69,6 +71,7 @@ PlaneBoundarySeeds circle_pairs(const refinement::PlaneProtection& protection) {
         const Point2 p = circles[c].centre + circles[c].radius * Point2(std::cos(t), std::sin(t));
         if (covered(c, p)) continue;
         out.twin.push_back(static_cast<std::uint32_t>(out.seeds.size()));
+        out.on_circles.push_back({static_cast<std::int32_t>(c), -1});
         out.seeds.push_back({Point(p.x(), p.y(), 0), kOutsideRegion, circles[c].radius, SeedKind::Cap});
       }
     }

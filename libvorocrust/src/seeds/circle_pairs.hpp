@@ -9,6 +9,7 @@
 // where no other circle covers them (kind Cap).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,7 @@ namespace vorocrust::seeds {
 struct PlaneBoundarySeeds {
   std::vector<Seed> seeds;           // z = 0, region not yet known (0)
   std::vector<std::uint32_t> twin;   // a pair seed's partner across its chain; a cap seed itself
+  std::vector<std::array<std::int32_t, 2>> on_circles;  // the circles each lies on (-1: none)
 };
 
 PlaneBoundarySeeds circle_pairs(const refinement::PlaneProtection& protection);
