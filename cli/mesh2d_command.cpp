@@ -10,14 +10,6 @@
 
 namespace vorocrust::cli {
 
-namespace {
-
-// The options of the library's table that a 2D run takes, as `mesh` spells them.
-const std::vector<std::string_view> kTableOptions = {"lipschitz", "max_size",       "sizing", "sharp_angle",
-                                                      "interior",  "cvt_iterations", "seed",   "threads"};
-
-}  // namespace
-
 CLI::App* add_mesh2d_command(CLI::App& app, Mesh2dArgs& args) {
   CLI::App* cmd = app.add_subcommand(
       "mesh2d", "Generate a conforming Voronoi mesh of a 2D domain: a planar straight-line graph (Triangle's .poly, "
@@ -25,7 +17,7 @@ CLI::App* add_mesh2d_command(CLI::App& app, Mesh2dArgs& args) {
   cmd->add_option("INPUT", args.input, "The domain: .poly (vertices, segments, holes, regional attributes) or .obj (l elements)")
       ->required();
   cmd->add_option("-o,--output", args.output_dir, "Output folder (created if missing); report.json goes there")->required();
-  args.options.add(*cmd, kTableOptions);
+  args.options.add(*cmd, plane_option_names());
   std::string formats_help = "Outputs, comma-separated:";
   for (const std::string& f : plane_format_names()) formats_help += " " + f;
   cmd->add_option("--format", args.formats, formats_help + "; default: all")
@@ -49,14 +41,7 @@ int run_mesh2d(const Mesh2dArgs& args) {
   job.formats = args.formats;
   job.thickness = args.thickness;
   job.command = args.command_line;
-  job.options.lipschitz = table.lipschitz;
-  job.options.max_size = table.max_size;
-  job.options.sizing_file = table.sizing_file;
-  job.options.sharp_angle_degrees = table.sharp_angle();
-  job.options.interior = table.interior;
-  job.options.cvt_iterations = table.cvt_iterations;
-  job.options.seed = table.seed;
-  job.options.threads = table.threads;
+  job.options = plane_options(table);
   const PlaneJobResult result = run_plane_job(job);
   if (!args.quiet) {
     for (const std::string& line : result.summary) std::fprintf(stderr, "vorocrust: %s\n", line.c_str());

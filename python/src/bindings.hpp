@@ -123,10 +123,15 @@ py::list findings_list(const ValidationReport& report);
 // A JSON document of the library, as Python objects (json.loads).
 py::object parse_json(const std::string& text);
 
+// A Python value as the option's value (None: unset); Error(Usage) naming the option when it
+// is of the wrong kind.
+OptionValue option_value(const OptionSpec& spec, const py::handle& value);
+
 void bind_errors(py::module_& m);
 void bind_surface(py::module_& m);
 void bind_seeds(py::module_& m);
 void bind_cells(py::module_& m);
 void bind_mesher(py::module_& m);
+void bind_plane(py::module_& m);
 
 }  // namespace vorocrust::python

@@ -35,7 +35,8 @@ struct MeshRun {
               {.option = std::string(spec.name)});
 }
 
-// A Python value as the option's value; None: unset.
+}  // namespace
+
 OptionValue option_value(const OptionSpec& spec, const py::handle& value) {
   if (value.is_none()) return std::monostate{};
   const bool is_bool = py::isinstance<py::bool_>(value);
@@ -82,6 +83,8 @@ OptionValue option_value(const OptionSpec& spec, const py::handle& value) {
   }
   wrong_type(spec, "a value", value);
 }
+
+namespace {
 
 py::object python_value(const OptionValue& value) {
   return std::visit(

@@ -43,6 +43,7 @@ PYBIND11_MODULE(_vorocrust, m) {
   bind_seeds(m);
   bind_cells(m);
   bind_mesher(m);
+  bind_plane(m);
 }
 
 }  // namespace vorocrust::python

@@ -32,6 +32,9 @@ from ._vorocrust import (  # noqa: F401  (the public interface)
     Surface,
     UnreadableInputError,
     OPTIONS,
+    PLANE_FORMATS,
+    PLANE_OPTIONS,
+    PlaneMesh,
     UsageError,
     __version__,
     compute_cells,
@@ -60,7 +63,7 @@ __all__ = [
     "read_exodus", "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_exodus", "write_outputs", "write_pflotran",
     "write_tough",
     "write_files", "write_seeds", "write_surface", "write_vtu", "OUTPUT_FORMATS", "VOLUME_FORMATS",
-    "INTERIOR_MODES", "STAGES",
+    "INTERIOR_MODES", "STAGES", "mesh2d", "PlaneMesh", "PLANE_OPTIONS", "PLANE_FORMATS",
 ]
 
 #: OPTIONS: every option of mesh(), from the library's one table of options: a dict each with its
@@ -127,6 +130,37 @@ VOLUME_FORMATS = tuple(name for name, _, _, volume, _ in _vorocrust._OUTPUT_TABL
 _FORMAT_PARTS = {"balls": "balls", "seeds": "seeds", "obj": "surface", "ply": "surface", "svg": "run",
                  "html": "run", "report": "run", "vtu": "cells", "openfoam": "cells", "tough": "cells", "pflotran": "cells",
                  "exodus": "cells"}
+
+
+def mesh2d(domain, *, output_dir=None, formats=None, thickness=1.0, **options):
+    return _vorocrust._mesh2d(domain, options, output_dir, formats, float(thickness))
+
+
+mesh2d.__signature__ = inspect.Signature(
+    [inspect.Parameter("domain", inspect.Parameter.POSITIONAL_OR_KEYWORD)]
+    + [inspect.Parameter(o["name"], inspect.Parameter.KEYWORD_ONLY, default=o["default"])
+       for o in OPTIONS if o["name"] in PLANE_OPTIONS]
+    + [inspect.Parameter("output_dir", inspect.Parameter.KEYWORD_ONLY, default=None),
+       inspect.Parameter("formats", inspect.Parameter.KEYWORD_ONLY, default=None),
+       inspect.Parameter("thickness", inspect.Parameter.KEYWORD_ONLY, default=1.0)])
+mesh2d.__doc__ = """Meshes a 2D domain as `vorocrust mesh2d` does (paper 2.6). Returns a PlaneMesh.
+
+domain: a .poly file (Triangle's: vertices, segments, holes, regional attributes), an .obj file
+    of polylines (l elements), or a dict of arrays: "points" (n x 2), "segments" (m x 2 indices
+    from 0), and optionally "holes" (k x 2) and "regions" ([(x, y, label), ...]). Open segments
+    inside a region are breaklines: cell edges follow them, both sides keep the region.
+output_dir: a folder to write into (made when missing), with report.json. None: nothing written.
+formats: what to write there, of PLANE_FORMATS (None: all): vtu (mesh.vtu, polygons), svg
+    (mesh.svg), openfoam (case/, one cell thick), tough (MESH), pflotran, exodus, seeds.
+thickness: the thickness of the one-cell slab the OpenFOAM, TOUGH, PFLOTRAN and Exodus files hold.
+
+The options, those of mesh() that a 2D run takes (None leaves one at its default):
+""" + "\n".join(_option_doc(o) for o in OPTIONS if o["name"] in PLANE_OPTIONS) + """
+
+Raises UsageError naming an unknown option or a value out of range, UnreadableInputError and
+InvalidGeometryError naming the file, line or place (open boundaries, crossing or repeated
+segments that cannot be split, features closer than the circles can resolve).
+"""
 
 
 def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=None, cells=None):

@@ -36,6 +36,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <Eigen/Core>
@@ -43,6 +44,7 @@
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/modes.hpp"
+#include "vorocrust/options.hpp"
 #include "vorocrust/seeds.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
@@ -90,6 +92,12 @@ struct VOROCRUST_API PlaneOptions {
   int threads = 0;
   void check() const;  // Error(Usage) naming the option out of range
 };
+
+// The options of the library's one table (options.hpp) that a 2D run takes, by name, and
+// their values in force in `options` as PlaneOptions: every front end offers these, spelled as
+// it spells the table's.
+VOROCRUST_API std::vector<std::string_view> plane_option_names();
+VOROCRUST_API PlaneOptions plane_options(const MeshOptions& options);
 
 struct VOROCRUST_API PlaneCircle {
   Point2 centre = Point2::Zero();

@@ -17,6 +17,7 @@
 #include "vorocrust/modes.hpp"
 #include "vorocrust/options.hpp"
 #include "vorocrust/outputs.hpp"
+#include "vorocrust/plane.hpp"
 #include "vorocrust/progress.hpp"
 #include "vorocrust/quality.hpp"
 #include "vorocrust/quality_svg.hpp"

@@ -263,6 +263,23 @@ PlaneMesh mesh_plane(const PlanarDomain& input, const PlaneOptions& options) {
   return mesh;
 }
 
+std::vector<std::string_view> plane_option_names() {
+  return {"lipschitz", "max_size", "sizing", "sharp_angle", "interior", "cvt_iterations", "seed", "threads"};
+}
+
+PlaneOptions plane_options(const MeshOptions& options) {
+  PlaneOptions p;
+  p.lipschitz = options.lipschitz;
+  p.max_size = options.max_size;
+  p.sizing_file = options.sizing_file;
+  p.sharp_angle_degrees = options.sharp_angle();
+  p.interior = options.interior;
+  p.cvt_iterations = options.cvt_iterations;
+  p.seed = options.seed;
+  p.threads = options.threads;
+  return p;
+}
+
 void PlaneOptions::check() const {
   const auto bad = [](const char* option, const std::string& why) {
     throw Error(Error::Kind::Usage, std::string(option) + " " + why, {.option = option});
