@@ -168,49 +168,24 @@ class VoronoiMeshPanel:
 
     def _build(self):
         p = preferences()
-        form = QtGui.QWidget()
-        form.setWindowTitle("Voronoi mesh")
-        form.setWindowIcon(QtGui.QIcon(VoroCrustResources.icon("VoronoiMesh.svg")))
-        layout = QtGui.QVBoxLayout(form)
+        form, layout, grid = self._option_form(
+            "Voronoi mesh", "Input (each solid or mesh one material): ",
+            ("Tessellation tolerance", "Tolerance", 0.1, 1e-4, "Largest distance between a Part shape and its triangles"),
+            [o for o in VoroCrustMesher.OPTIONS if o["name"] != "formats"])
+        chosen = p.GetString("Formats", ",".join(VoroCrustMesher.DEFAULT_FORMATS)).split(",")
+        self._outputs_and_progress(layout, grid, lambda box_layout: _format_boxes(box_layout, chosen, with_report=False))
+        return form
 
-        inputs = QtGui.QLabel("Input (each solid or mesh one material): " + ", ".join(o.Label for o in self.objects))
-        inputs.setWordWrap(True)
-        layout.addWidget(inputs)
-        grid = QtGui.QFormLayout()
-        layout.addLayout(grid)
-        self.tolerance = QtGui.QDoubleSpinBox()
-        self.tolerance.setRange(1e-4, 1e6)
-        self.tolerance.setDecimals(4)
-        self.tolerance.setSingleStep(0.05)
-        self.tolerance.setValue(p.GetFloat("Tolerance", 0.1))
-        self.tolerance.setToolTip("Largest distance between a Part shape and its triangles")
-        grid.addRow("Tessellation tolerance", self.tolerance)
-        # One widget per option of the library's table, grouped as it groups them; each is also
-        # an attribute of the panel under the option's name (self.sharp_angle).
-        self.widgets = {}
-        self._inputs = [self.tolerance]
-        for o in VoroCrustMesher.OPTIONS:
-            if o["name"] == "formats":
-                continue
-            widget = _option_widget(o, _remembered(p, o))
-            self.widgets[o["name"]] = widget
-            setattr(self, o["name"], widget)
-            label = o["label"] + (" (%s)" % o["unit"] if o["unit"] else "")
-            grid.addRow(label, widget)
-            self._inputs.append(widget)
-        self.cvt_iterations.setEnabled(self.interior.currentText() == "cvt")
-        self.interior.currentTextChanged.connect(lambda mode: self.cvt_iterations.setEnabled(mode == "cvt"))
-
-        folder_row, self.folder = _folder_row(p.GetString("OutputFolder", "") or
+    def _outputs_and_progress(self, layout, grid, make_boxes):
+        """The rest of a panel's form: the output folder, the format boxes make_boxes(layout)
+        returns, the progress bar and the status line."""
+        folder_row, self.folder = _folder_row(preferences().GetString("OutputFolder", "") or
                                               VoroCrustMesher.default_output_dir(self.doc))
         grid.addRow("Output folder", folder_row)
         formats = QtGui.QGroupBox("Outputs (report.json is always written)")
-        formats_layout = QtGui.QVBoxLayout(formats)
-        chosen = p.GetString("Formats", ",".join(VoroCrustMesher.DEFAULT_FORMATS)).split(",")
-        self.formats = _format_boxes(formats_layout, chosen, with_report=False)
+        self.formats = make_boxes(QtGui.QVBoxLayout(formats))
         layout.addWidget(formats)
         self._inputs += [folder_row, formats]
-
         self.progress = QtGui.QProgressBar()
         self.progress.setRange(0, 100)
         self.progress.setValue(0)
@@ -218,7 +193,41 @@ class VoronoiMeshPanel:
         self.status.setWordWrap(True)
         layout.addWidget(self.progress)
         layout.addWidget(self.status)
-        return form
+
+    def _option_form(self, title, inputs_text, tolerance, options):
+        """The panel's form: its title, the inputs, the tolerance (label, preference key,
+        default, lowest value, tip) and a widget per option of `options`, in the table's order;
+        each widget is also an attribute of the panel under the option's name
+        (self.sharp_angle). Returns (form, its layout, the grid of rows)."""
+        p = preferences()
+        form = QtGui.QWidget()
+        form.setWindowTitle(title)
+        form.setWindowIcon(QtGui.QIcon(VoroCrustResources.icon("VoronoiMesh.svg")))
+        layout = QtGui.QVBoxLayout(form)
+        inputs = QtGui.QLabel(inputs_text + ", ".join(o.Label for o in self.objects))
+        inputs.setWordWrap(True)
+        layout.addWidget(inputs)
+        grid = QtGui.QFormLayout()
+        layout.addLayout(grid)
+        label, key, default, lowest, tip = tolerance
+        self.tolerance = QtGui.QDoubleSpinBox()
+        self.tolerance.setRange(lowest, 1e6)
+        self.tolerance.setDecimals(6 if lowest < 1e-4 else 4)
+        self.tolerance.setSingleStep(0.05)
+        self.tolerance.setValue(p.GetFloat(key, default))
+        self.tolerance.setToolTip(tip)
+        grid.addRow(label, self.tolerance)
+        self.widgets = {}
+        self._inputs = [self.tolerance]
+        for o in options:
+            widget = _option_widget(o, _remembered(p, o))
+            self.widgets[o["name"]] = widget
+            setattr(self, o["name"], widget)
+            grid.addRow(o["label"] + (" (%s)" % o["unit"] if o["unit"] else ""), widget)
+            self._inputs.append(widget)
+        self.cvt_iterations.setEnabled(self.interior.currentText() == "cvt")
+        self.interior.currentTextChanged.connect(lambda mode: self.cvt_iterations.setEnabled(mode == "cvt"))
+        return form, layout, grid
 
     def parameters(self):
         """The parameters as the panel shows them."""
@@ -251,14 +260,13 @@ class VoronoiMeshPanel:
         parameters = self.parameters()
         self._remember(parameters)
         try:
-            model = VoroCrustMesher.model_of(self.objects, parameters.tolerance)
+            work = self._prepare(parameters)
         except Exception as e:  # the library's and FreeCAD's errors alike become messages
             self._failed(e)
             return False
         self._cancel = False
         self._state = {"phase": "starting", "fraction": None, "done": False}
-        self._worker = threading.Thread(target=self._work, args=(model, parameters, self.folder.text(),
-                                                                 self.chosen_formats()), daemon=True)
+        self._worker = threading.Thread(target=self._work, args=work, daemon=True)
         self._set_inputs_enabled(False)
         self.status.setText("Meshing...")
         self._worker.start()
@@ -272,6 +280,10 @@ class VoronoiMeshPanel:
             self.status.setText("Cancelling...")
             return False
         return True
+
+    def _prepare(self, parameters):
+        """What the worker needs, read from the document in the GUI thread: _work's arguments."""
+        return VoroCrustMesher.model_of(self.objects, parameters.tolerance), parameters, self.folder.text(), self.chosen_formats()
 
     def _work(self, model, parameters, folder, formats):
         # The worker thread: only the library runs here (meshing, writing the files), no FreeCAD
@@ -316,20 +328,25 @@ class VoronoiMeshPanel:
             self._failed(error)
             return
         try:
-            self.result_object = VoroCrustMesher.add_result(self.doc, self.objects, self._state["parameters"],
-                                                           self._state["result"], self.folder.text(),
-                                                           self.chosen_formats())
+            self.result_object = self._add_result()
         except Exception as e:
             self._failed(e)
             return
         self.progress.setValue(100)
         self.status.setText("Done: %s" % self.result_object.Label)
         Gui.Control.closeDialog()
-        if self._state["result"].stop_after == "cells":
+        if self._shows_result_window():
             try:
                 ResultWindow(self.result_object, self._state["result"], self._state["result"].written).show()
             except Exception as e:  # the result is in the document and on disk: say so, go on
                 report_error(e)
+
+    def _add_result(self):
+        return VoroCrustMesher.add_result(self.doc, self.objects, self._state["parameters"], self._state["result"],
+                                          self.folder.text(), self.chosen_formats())
+
+    def _shows_result_window(self):
+        return self._state["result"].stop_after == "cells"
 
     def _failed(self, error):
         report_error(error)
@@ -339,6 +356,67 @@ class VoronoiMeshPanel:
         for widget in self._inputs:
             widget.setEnabled(enabled)
         self.cvt_iterations.setEnabled(enabled and self.interior.currentText() == "cvt")
+
+
+class VoronoiMesh2dPanel(VoronoiMeshPanel):
+    """The task panel of "Voronoi mesh" on sketches and Draft wires: a 2D domain (paper 2.6),
+    with the options a 2D run takes, the slab thickness of the volume formats, and the 2D
+    formats. Closed wires inside an odd number of others bound holes; open wires are breaklines."""
+
+    def _build(self):
+        p = preferences()
+        form, layout, grid = self._option_form(
+            "Voronoi mesh (2D)", "2D domain (closed wires bound regions and holes, open wires are breaklines): ",
+            ("Curve tolerance", "CurveTolerance", 0.01, 1e-6, "Largest distance between a curve and the segments it becomes"),
+            VoroCrustMesher.PLANE_OPTIONS)
+        self.thickness = QtGui.QDoubleSpinBox()
+        self.thickness.setRange(1e-9, 1e9)
+        self.thickness.setDecimals(6)
+        self.thickness.setValue(p.GetFloat("Thickness", 1.0))
+        self.thickness.setToolTip("Thickness of the one-cell slab the OpenFOAM, TOUGH, PFLOTRAN and Exodus files hold")
+        grid.addRow("Slab thickness", self.thickness)
+        self._inputs.append(self.thickness)
+        chosen = p.GetString("PlaneFormats", ",".join(VoroCrustMesher.DEFAULT_PLANE_FORMATS)).split(",")
+
+        def boxes(box_layout):
+            made = {}
+            for name in VoroCrustMesher.PLANE_FORMATS:
+                made[name] = QtGui.QCheckBox(name)
+                made[name].setChecked(name in chosen)
+                box_layout.addWidget(made[name])
+            return made
+
+        self._outputs_and_progress(layout, grid, boxes)
+        return form
+
+    def _remember(self, parameters):
+        p = preferences()
+        p.SetFloat("CurveTolerance", parameters.tolerance)
+        p.SetFloat("Thickness", self.thickness.value())
+        for name, widget in self.widgets.items():
+            _remember_value(p, _spec(name), _widget_value(widget))
+        p.SetString("OutputFolder", self.folder.text())
+        p.SetString("PlaneFormats", ",".join(self.chosen_formats()))
+
+    def _prepare(self, parameters):
+        domain, self._placement = VoroCrustMesher.planar_domain(self.objects, parameters.tolerance)
+        return domain, parameters, self.folder.text(), self.chosen_formats(), self.thickness.value()
+
+    def _work(self, domain, parameters, folder, formats, thickness):
+        # The worker thread: only the library runs here.
+        try:
+            self._state["result"] = VoroCrustMesher.run_2d(domain, parameters, folder, formats, thickness)
+            self._state["parameters"] = parameters
+        except BaseException as e:
+            self._state["error"] = e
+        finally:
+            self._state["done"] = True
+
+    def _add_result(self):
+        return VoroCrustMesher.add_result_2d(self.doc, self._state["result"], self._placement)
+
+    def _shows_result_window(self):
+        return False
 
 
 class ResultWindow:
@@ -440,26 +518,32 @@ class ExportPanel:
 
 
 class VoronoiMeshCommand:
-    """Meshes the selected Mesh objects and Part solids."""
+    """Meshes the selected Mesh objects and Part solids, or the selected sketches and wires in 2D."""
 
     def GetResources(self):
         return {"Pixmap": VoroCrustResources.icon("VoronoiMesh.svg"), "MenuText": "Voronoi mesh",
-                "ToolTip": "Conforming Voronoi mesh of the selected Mesh objects and Part solids: the output "
-                           "surface, the seeds and the volume mesh files"}
+                "ToolTip": "Conforming Voronoi mesh of the selected Mesh objects and Part solids (the output "
+                           "surface, the seeds and the volume mesh files), or of the selected sketches and "
+                           "wires as a 2D domain"}
 
     def IsActive(self):
         return App.ActiveDocument is not None and any(
-            VoroCrustMesher.is_meshable(o) for o in Gui.Selection.getSelection())
+            VoroCrustMesher.is_meshable(o) or VoroCrustMesher.is_planar_wire(o) for o in Gui.Selection.getSelection())
 
     def Activated(self):
-        objects = [o for o in Gui.Selection.getSelection() if VoroCrustMesher.is_meshable(o)]
-        if not objects:
-            report_error("select Mesh objects or Part solids to mesh")
+        selected = Gui.Selection.getSelection()
+        objects = [o for o in selected if VoroCrustMesher.is_meshable(o)]
+        wires = [o for o in selected if VoroCrustMesher.is_planar_wire(o)]
+        if objects and wires:
+            report_error("select either solids and meshes (3D) or sketches and wires (2D), not both")
+            return
+        if not objects and not wires:
+            report_error("select Mesh objects or Part solids, or sketches and wires, to mesh")
             return
         if Gui.Control.activeDialog():
             report_error("close the open task panel first")
             return
-        Gui.Control.showDialog(VoronoiMeshPanel(objects))
+        Gui.Control.showDialog(VoronoiMeshPanel(objects) if objects else VoronoiMesh2dPanel(wires))
 
 
 class ExportCommand:

@@ -266,8 +266,7 @@ def voronoi_mesh(objects, parameters=None, output_dir=None, formats=DEFAULT_FORM
 
 def add_result(doc, objects, parameters, result, output_dir, formats):
     """Adds a finished run's objects to `doc` in one undoable step, and says what it wrote."""
-    doc.openTransaction("Voronoi mesh")
-    try:
+    def build():
         obj = doc.addObject("App::DocumentObjectGroupPython", "VoronoiMesh")
         VoronoiMeshResult(obj)
         obj.Proxy.set_result(obj, objects, parameters, result, output_dir, formats)
@@ -275,16 +274,28 @@ def add_result(doc, objects, parameters, result, output_dir, formats):
             import VoroCrustGui
 
             VoroCrustGui.ViewProviderVoronoiMesh(obj.ViewObject)
+        return obj
+
+    obj = _in_one_step(doc, "Voronoi mesh", build, result.summary)
+    for path in result.written:
+        App.Console.PrintLog("VoroCrust: wrote %s\n" % path)
+    return obj
+
+
+def _in_one_step(doc, title, build, summary):
+    """build() in one undoable step of `doc` (none when it raises), then the run's summary in
+    FreeCAD's report; returns what build() made."""
+    doc.openTransaction(title)
+    try:
+        made = build()
         doc.recompute()
     except Exception:
         doc.abortTransaction()
         raise
     doc.commitTransaction()
-    for line in result.summary:
+    for line in summary:
         App.Console.PrintMessage("VoroCrust: %s\n" % line)
-    for path in result.written:
-        App.Console.PrintLog("VoroCrust: wrote %s\n" % path)
-    return obj
+    return made
 
 
 def material_surfaces(surface):
@@ -433,3 +444,145 @@ def export_result(obj, folder, formats):
                                    "(run Voronoi mesh again for them)" % ", ".join(unavailable))
     return vorocrust.write_files(folder, list(formats), seeds=seeds, surface=surface,
                                  cells=vorocrust.compute_cells(seeds) if any(f in vorocrust.VOLUME_FORMATS for f in formats) else None)
+
+
+# 2D domains (paper 2.6): sketches and Draft wires.
+
+#: What a 2D run can write (vorocrust.PLANE_FORMATS), and what it writes unless told otherwise.
+PLANE_FORMATS = tuple(vorocrust.PLANE_FORMATS)
+DEFAULT_PLANE_FORMATS = ("vtu", "svg", "openfoam", "tough", "pflotran", "seeds")
+#: The options a 2D run takes, of OPTIONS.
+PLANE_OPTIONS = [o for o in OPTIONS if o["name"] in vorocrust.PLANE_OPTIONS]
+
+
+def is_planar_wire(obj):
+    """True for Part objects whose shape is edges without faces: sketches, Draft wires, lines."""
+    if not obj.isDerivedFrom("Part::Feature") or obj.Shape.isNull():
+        return False
+    return len(obj.Shape.Edges) > 0 and len(obj.Shape.Faces) == 0
+
+
+def _inside(point, polygon):
+    """Whether a point lies inside a closed polygon (a list of (x, y)), by crossings."""
+    x, y = point
+    inside = False
+    for (x1, y1), (x2, y2) in zip(polygon, polygon[1:] + polygon[:1]):
+        if (y1 > y) != (y2 > y) and x < x1 + (y - y1) * (x2 - x1) / (y2 - y1):
+            inside = not inside
+    return inside
+
+
+def planar_domain(objects, tolerance):
+    """The wires of `objects` as a 2D domain for vorocrust.mesh2d(), in the plane of the first
+    object (its Placement): returns (domain, placement). Curves become polylines within
+    `tolerance` of them; points that meet are shared. As Part makes faces of a sketch, a closed
+    wire inside an odd number of others bounds a hole; open wires inside a region are
+    breaklines. Raises ValueError when the wires do not lie in one plane."""
+    placement = objects[0].Placement
+    to_plane = placement.inverse()
+    points, index, segments, closed = [], {}, [], []
+    size = max(max(o.Shape.BoundBox.XLength, o.Shape.BoundBox.YLength, o.Shape.BoundBox.ZLength) for o in objects)
+    snap = 1e-9 * max(size, 1e-300)
+
+    def point_id(v):
+        local = to_plane.multVec(v)
+        if abs(local.z) > max(tolerance, 1e-7 * size):
+            raise ValueError("the wires do not lie in one plane: a point lies %g from the plane of %s" % (
+                local.z, objects[0].Label))
+        key = (round(local.x / snap), round(local.y / snap))
+        if key not in index:
+            index[key] = len(points)
+            points.append((local.x, local.y))
+        return index[key]
+
+    for obj in objects:
+        for wire in obj.Shape.Wires:
+            chain = []
+            for edge in wire.OrderedEdges:
+                if edge.Curve.TypeId == "Part::GeomLine":
+                    along = [edge.Vertexes[0].Point, edge.Vertexes[-1].Point]
+                    if edge.Orientation == "Reversed":
+                        along.reverse()
+                else:
+                    along = edge.discretize(Deflection=tolerance)
+                    if edge.Orientation == "Reversed":
+                        along.reverse()
+                ids = [point_id(v) for v in along]
+                for a, b in zip(ids, ids[1:]):
+                    if a != b:
+                        segments.append((a, b))
+                chain += ids if not chain else ids[1:]
+            if wire.isClosed() and len(chain) > 3:
+                closed.append([points[i] for i in chain[:-1]])
+        # Edges in no wire (loose sketch geometry).
+        in_wires = {e.hashCode() for w in obj.Shape.Wires for e in w.Edges}
+        for edge in obj.Shape.Edges:
+            if edge.hashCode() in in_wires:
+                continue
+            ids = [point_id(v) for v in edge.discretize(Deflection=tolerance)]
+            segments += [(a, b) for a, b in zip(ids, ids[1:]) if a != b]
+    holes = []
+    for k, polygon in enumerate(closed):
+        depth = sum(1 for j, other in enumerate(closed) if j != k and _inside(polygon[0], other))
+        if depth % 2 == 1:
+            # Just inside the wire, beside the middle of its first side.
+            (x1, y1), (x2, y2) = polygon[0], polygon[1]
+            mx, my, nx, ny = (x1 + x2) / 2, (y1 + y2) / 2, y1 - y2, x2 - x1
+            for side in (1e-3, -1e-3):
+                candidate = (mx + side * nx, my + side * ny)
+                if _inside(candidate, polygon):
+                    holes.append(candidate)
+                    break
+    unique = sorted({(min(a, b), max(a, b)) for a, b in segments})
+    return {"points": np.array(points, dtype=np.float64).reshape(-1, 2),
+            "segments": np.array(unique, dtype=np.int64).reshape(-1, 2),
+            "holes": holes}, placement
+
+
+def run_2d(domain, parameters, output_dir=None, formats=DEFAULT_PLANE_FORMATS, thickness=1.0):
+    """Meshes a domain of planar_domain() with vorocrust.mesh2d() and the parameters' options
+    that a 2D run takes; returns the PlaneMesh. Touches no FreeCAD object, so it may run in a
+    worker thread."""
+    given = parameters.mesh_options()
+    options = {o["name"]: given[o["name"]] for o in PLANE_OPTIONS if given.get(o["name"]) is not None}
+    return vorocrust.mesh2d(domain, output_dir=output_dir, formats=list(formats), thickness=thickness, **options)
+
+
+def add_result_2d(doc, result, placement, label="VoronoiMesh2D"):
+    """The cells of a 2D run in `doc`, in one undoable step: a group holding one Mesh object per
+    region (each cell a fan of triangles, in the plane of the input) and the seeds of the cells
+    as a Points object."""
+    import Points
+
+    def build():
+        group = doc.addObject("App::DocumentObjectGroup", label)
+        vertices = [placement.multVec(App.Vector(float(x), float(y), 0)) for x, y in result.points]
+        for region in sorted(set(result.regions.tolist())):
+            triangles = [(cell[0], cell[k], cell[k + 1])
+                         for cell, r in zip(result.cells, result.regions) if r == region
+                         for k in range(1, len(cell) - 1)]
+            name = result.region_names[region] if region < len(result.region_names) else "region%d" % region
+            mesh = doc.addObject("Mesh::Feature", "Cells")
+            mesh.Label = "%s cells" % name
+            mesh.Mesh = _mesh_of([(v.x, v.y, v.z) for v in vertices], triangles)
+            group.addObject(mesh)
+        seeds = doc.addObject("Points::Feature", "Seeds")
+        seeds.Points = Points.Points([tuple(placement.multVec(App.Vector(float(x), float(y), 0)))
+                                      for x, y in result.seeds[result.cell_seeds]])
+        group.addObject(seeds)
+        return group
+
+    return _in_one_step(doc, "Voronoi mesh 2D", build, result.summary)
+
+
+def voronoi_mesh_2d(objects, parameters=None, output_dir=None, formats=DEFAULT_PLANE_FORMATS, thickness=1.0, doc=None):
+    """Meshes sketches or Draft wires as a 2D domain, writes the files and adds the cells to the
+    document; returns (the group, the PlaneMesh). Raises vorocrust.Error with the library's
+    message (an open boundary, a region point in no region) or ValueError (wires in no plane)."""
+    parameters = parameters or Parameters()
+    objects = list(objects)
+    doc = doc or objects[0].Document
+    output_dir = output_dir or default_output_dir(doc)
+    domain, placement = planar_domain(objects, parameters.tolerance)
+    result = run_2d(domain, parameters, output_dir, formats, thickness)
+    return add_result_2d(doc, result, placement), result

@@ -30,10 +30,11 @@ def count_lines(path):
 
 def main():
     import FreeCAD as App
+    import Part
 
     import VoroCrustMesher
     import vorocrust
-    from scene import box_and_sphere, check, overlapping_box
+    from scene import box_and_sphere, check, check_mesh_ok, overlapping_box, sketch_domain
 
     def close(a, b, relative, what):
         check(abs(a - b) <= relative * abs(b), "%s: %r is not within %g %% of %r" % (what, a, 100 * relative, b))
@@ -205,6 +206,37 @@ def main():
     coarse = VoroCrustMesher.model_parts([cylinder], 0.5)[0][1].num_faces
     fine = VoroCrustMesher.model_parts([cylinder], 0.01)[0][1].num_faces
     check(fine > coarse, "tessellation: %d triangles at 0.01, %d at 0.5" % (fine, coarse))
+
+    # A sketch as a 2D domain (paper 2.6): its circle a hole, its open segment a breakline.
+    sketch, (low, high) = sketch_domain(doc)
+    check(VoroCrustMesher.is_planar_wire(sketch) and not VoroCrustMesher.is_meshable(sketch), "the sketch's kind")
+    out2d = os.path.join(WORK, "out2d")
+    group, plane = VoroCrustMesher.voronoi_mesh_2d([sketch], VoroCrustMesher.Parameters(0.01, max_size=0.3, seed=7),
+                                                   output_dir=out2d, thickness=0.5)
+    area = plane.quality["area_by_region"][1]
+    check(low <= area <= high, "2D area %r outside [%r, %r]" % (area, low, high))
+    check(plane.region_names[1] == "inside" and plane.quality["interface_edges"] == 0, "one region, the breakline in it")
+    check(plane.quality["convex"] and plane.quality["max_link_angle"] < 1e-6, "convex cells, edges orthogonal to the links")
+    cells = [o for o in group.Group if o.isDerivedFrom("Mesh::Feature")]
+    check(len(cells) == 1 and cells[0].Mesh.CountFacets == sum(len(c) - 2 for c in plane.cells),
+          "cells in the document: %s" % [o.Label for o in group.Group])
+    # The cells lie in the sketch's plane: y = 0 there after the turn, z from 5 to 11.
+    box = cells[0].Mesh.BoundBox
+    check(abs(box.YMin) < 1e-9 and abs(box.YMax) < 1e-9 and abs(box.ZMin - 5) < 1e-9 and abs(box.ZMax - 11) < 1e-9,
+          "cells placed at %s" % box)
+    ok, log = check_mesh_ok(os.path.join(out2d, "case"))
+    check(ok, "checkMesh on the 2D case: " + log)
+    summary["plane"] = {"cells": len(plane.cells), "area": area}
+    # An open sketch bounds nothing: the library's message says where the gap is.
+    open_sketch = doc.addObject("Sketcher::SketchObject", "Open")
+    for a, b in ((0, 0), (4, 0)), ((4, 0), (4, 3)), ((4, 3), (0, 3)):
+        open_sketch.addGeometry(Part.LineSegment(App.Vector(*a, 0), App.Vector(*b, 0)))
+    doc.recompute()
+    try:
+        VoroCrustMesher.voronoi_mesh_2d([open_sketch], output_dir=os.path.join(WORK, "open"))
+        raise AssertionError("an open sketch did not raise")
+    except vorocrust.InvalidGeometryError as e:
+        check("gap" in str(e), "message: %s" % e)
 
     with open(SUMMARY, "w") as f:
         json.dump(summary, f, indent=1)

@@ -26,7 +26,7 @@ def main():
     import FreeCADGui as Gui
     from PySide import QtGui
 
-    from scene import box_and_sphere, check, overlapping_box
+    from scene import box_and_sphere, check, check_mesh_ok, overlapping_box, sketch_domain
 
     def wait(condition, what, timeout=900):
         end = time.monotonic() + timeout
@@ -196,6 +196,32 @@ def main():
     summary["invalid"] = panel.status.text()
     cancel.click()
     wait(lambda: not Gui.Control.activeDialog(), "the panel to close", timeout=60)
+
+    # A sketch through the same command: the 2D panel, its run, the cells in the document.
+    sketch, (low, high) = sketch_domain(doc)
+    out2d = os.path.join(WORK, "out2d")
+    preferences.SetString("OutputFolder", out2d)
+    preferences.SetString("PlaneFormats", "vtu,svg,openfoam")
+    panel = open_panel([sketch])
+    check(isinstance(panel, VoroCrustGui.VoronoiMesh2dPanel), "sketches open %s" % type(panel).__name__)
+    check(not hasattr(panel, "smooth") and panel.chosen_formats() == ["vtu", "svg", "openfoam"],
+          "the 2D panel offers %s, formats %s" % (sorted(panel.widgets), panel.chosen_formats()))
+    panel.max_size.setValue(0.3)
+    panel.tolerance.setValue(0.01)
+    ok, _ = task_buttons()
+    ok.click()
+    wait(lambda: not panel.running(), "the 2D run")
+    QtGui.QApplication.processEvents()
+    if panel.result_object is None:
+        raise AssertionError("the 2D run failed: %s" % panel.status.text())
+    cells = [o for o in panel.result_object.Group if o.isDerivedFrom("Mesh::Feature")]
+    check(len(cells) == 1 and low <= cells[0].Mesh.Area <= high, "2D cells: %s, area %r not in [%r, %r]" % (
+        [o.Label for o in panel.result_object.Group], cells[0].Mesh.Area if cells else None, low, high))
+    for name in ("mesh.vtu", "mesh.svg", "report.json"):
+        check(os.path.isfile(os.path.join(out2d, name)), "%s not written" % name)
+    mesh_ok, log = check_mesh_ok(os.path.join(out2d, "case"))
+    check(mesh_ok, "checkMesh on the 2D case: " + log)
+    summary["plane_area"] = cells[0].Mesh.Area
 
     summary.update(out=out, cells=result.CellCount, volume=result.Volume, input_volume=input_volume, materials=3,
                    seeds=result.SeedCount, triangles=result.SurfaceTriangles, stop_after=STOP_AFTER,
