@@ -2,7 +2,7 @@
 # Fuzzes the readers: each libFuzzer target of tests/fuzz for SECONDS seconds (default 600), two
 # at a time, from a copy of the committed corpus, under AddressSanitizer and UBSan.
 #
-#   bash bench/fuzz.sh [SECONDS] [TARGET...]      targets: off obj stl ply seeds sizing balls
+#   bash bench/fuzz.sh [SECONDS] [TARGET...]      targets: off obj stl ply seeds sizing balls poly
 #
 # Builds build-fuzz/ with clang 14 (VOROCRUST_FUZZ=ON). Crashes land in build-fuzz/crashes/<target>/;
 # a crash becomes a regression test by adding its input (minimised with -minimize_crash=1) to
@@ -13,7 +13,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(off obj stl ply seeds sizing balls)
+[ ${#targets[@]} -gt 0 ] || targets=(off obj stl ply seeds sizing balls poly)
 
 build=build-fuzz
 if [ ! -f "$build/build.ninja" ]; then

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <numeric>
 
@@ -154,6 +155,47 @@ TEST(MeshPlane, ThinChannel) {
   EXPECT_TRUE(std::any_of(m.mesh.cells.begin(), m.mesh.cells.end(), [](const PlaneCell& c) {
     return c.centroid.x() > 1.05 && c.centroid.x() < 1.45 && c.centroid.y() > 0.49 && c.centroid.y() < 0.51;
   }));
+}
+
+TEST(MeshPlane, EveryInteriorModeKeepsTheBoundaryAndTheArea) {
+  const PlanarDomain domain = read_planar_domain(sample("square_hole.poly"));
+  std::vector<double> areas;
+  for (const InteriorMode mode : {InteriorMode::Random, InteriorMode::Lattice, InteriorMode::Cvt}) {
+    PlaneOptions options;
+    options.max_size = 0.05;
+    options.interior = mode;
+    options.cvt_iterations = 10;
+    const PlaneMesh mesh = mesh_plane(domain, options);
+    const PlaneQuality q = measure_plane_quality(mesh);
+    expect_conforming(mesh, q);
+    areas.push_back(q.area_by_region[1]);
+    // Seeds of the boundary lie on their circles, the interior's outside all of them.
+    for (const Seed& s : mesh.seeds) {
+      if (s.kind != SeedKind::Interior && s.kind != SeedKind::Outside) continue;
+      for (const PlaneCircle& c : mesh.circles) ASSERT_GE((Point2(s.position.x(), s.position.y()) - c.centre).norm(), c.radius);
+    }
+  }
+  // The same boundary; the sums differ only by rounding, over other cells.
+  EXPECT_NEAR(areas[0], areas[1], 1e-12);
+  EXPECT_NEAR(areas[0], areas[2], 1e-12);
+}
+
+TEST(MeshPlane, ASizingFileRefinesWhereItAsks) {
+  test::TempDir dir("plane-sizing");
+  {
+    std::ofstream f(dir / "sizing.txt");
+    f << "# x y size\n0 0 0.02\n1 1 0.2\n";
+  }
+  const PlanarDomain domain = read_planar_domain(sample("square_hole.poly"));
+  PlaneOptions uniform, graded;
+  uniform.max_size = graded.max_size = 0.2;
+  graded.sizing_file = dir / "sizing.txt";
+  const PlaneMesh a = mesh_plane(domain, uniform), b = mesh_plane(domain, graded);
+  expect_conforming(b, measure_plane_quality(b));
+  const auto near_origin = [](const PlaneMesh& m) {
+    return std::count_if(m.cells.begin(), m.cells.end(), [](const PlaneCell& c) { return c.centroid.norm() < 0.25; });
+  };
+  EXPECT_GT(near_origin(b), 3 * near_origin(a));
 }
 
 TEST(MeshPlane, TheSameSeedGivesTheSameMeshOnAnyNumberOfThreads) {
