@@ -119,8 +119,14 @@ PlaneJobResult run_plane_job(const PlaneJob& job) {
   try {
     domain = job.domain ? *job.domain : read_planar_domain(job.input);
     result.mesh = mesh_plane(domain, job.options);
-    result.quality = measure_plane_quality(result.mesh);
+    const auto timed = [&](const char* phase, auto&& work) {
+      const auto begin = std::chrono::steady_clock::now();
+      work();
+      result.mesh.stats.seconds.emplace_back(phase, std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
+    };
+    timed("quality", [&] { result.quality = measure_plane_quality(result.mesh); });
     const PlanarDomain prepared = prepare_planar_domain(domain);
+    const auto begin_writing = std::chrono::steady_clock::now();
     if (!job.output_dir.empty()) {
       std::optional<VoronoiMesh> slab;
       for (const char* f : kFormats) {
@@ -140,6 +146,7 @@ PlaneJobResult run_plane_job(const PlaneJob& job) {
         }
       }
     }
+    result.mesh.stats.seconds.emplace_back("writing", std::chrono::duration<double>(std::chrono::steady_clock::now() - begin_writing).count());
     json report = report_of(job, &result.mesh, &result.quality, &prepared);
     report["status"] = "ok";
     write_report(job, report);
