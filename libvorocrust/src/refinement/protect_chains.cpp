@@ -209,7 +209,7 @@ class Protection {
           for (double sm = sa + kSpacing * row[i].second; sm < sb; sm += kSpacing * next.back().second) {
             next.emplace_back(sm, radius_at(sm));
           }
-          if (next.size() > first + 1 && (pos(next.back().first) - pos(sb)).norm() < 0.5 * kSpacing * row[j].second) next.pop_back();
+          if (next.size() > first && (pos(next.back().first) - pos(sb)).norm() < 0.5 * kSpacing * row[j].second) next.pop_back();
           if (next.size() == first) next.emplace_back((sa + sb) / 2, radius_at((sa + sb) / 2));
           changed = true;
         }
