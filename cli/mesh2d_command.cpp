@@ -28,6 +28,10 @@ CLI::App* add_mesh2d_command(CLI::App& app, Mesh2dArgs& args) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   cmd->add_flag("-q,--quiet", args.quiet, "Print nothing but errors");
+  cmd->footer(
+      "The options are mesh's, read in the plane: the balls are circles and the surface is the segments; "
+      "--sharp-angle is how far a polyline may turn at a point that is no corner (30 by default); a sizing "
+      "file's lines may also be 'x y size'; the lattice is hexagonal.");
   return cmd;
 }
 
