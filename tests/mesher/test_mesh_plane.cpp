@@ -180,6 +180,28 @@ TEST(MeshPlane, EveryInteriorModeKeepsTheBoundaryAndTheArea) {
   EXPECT_NEAR(areas[0], areas[2], 1e-12);
 }
 
+TEST(MeshPlane, ALatticeKeepsTheSpacingOfTheCoarsestCircleNotOfTheFinest) {
+  // A square with four tiny 64-gons inside: their many small circles must not set the
+  // lattice's spacing over the whole square (the median circle once did: a dense lattice).
+  PlanarDomain d;
+  d.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  for (const Point2& centre : {Point2(0.3, 0.3), Point2(0.7, 0.3), Point2(0.3, 0.7), Point2(0.7, 0.7)}) {
+    const auto first = static_cast<Index>(d.points.size());
+    for (Index k = 0; k < 64; ++k) {
+      const double t = 2 * std::numbers::pi * k / 64;
+      d.points.push_back(centre + 0.01 * Point2(std::cos(t), std::sin(t)));
+      d.segments.push_back({first + k, first + (k + 1) % 64});
+    }
+  }
+  PlaneOptions random, lattice;
+  random.max_size = lattice.max_size = 0.3;
+  lattice.interior = InteriorMode::Lattice;
+  const PlaneMesh a = mesh_plane(d, random), b = mesh_plane(d, lattice);
+  expect_conforming(b, measure_plane_quality(b));
+  EXPECT_LT(b.cells.size(), 2 * a.cells.size());
+}
+
 TEST(MeshPlane, ASizingFileRefinesWhereItAsks) {
   test::TempDir dir("plane-sizing");
   {

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <numeric>
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
@@ -150,8 +149,7 @@ PlaneAssembly weld_plane_cells(const std::vector<PlanePolygon>& cells, const std
     }
   }
   // Points within the tolerance of each other are one (the seeds of a degenerate vertex name it
-  // by different triples in different cells), and so are the ends of shorter edges. Points in
-  // order of x: each is compared with those after it up to the tolerance in x.
+  // by different triples in different cells), and so are the ends of shorter edges.
   UnionFind same(points.size());
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const std::size_t n = cells[i].vertices.size();
@@ -160,15 +158,23 @@ PlaneAssembly weld_plane_cells(const std::vector<PlanePolygon>& cells, const std
       if ((points[a] - points[b]).norm() <= tolerance) same.unite(a, b);
     }
   }
-  std::vector<Index> by_x(points.size());
-  std::iota(by_x.begin(), by_x.end(), Index{0});
-  tbb::parallel_sort(by_x.begin(), by_x.end(), [&](Index a, Index b) {
-    return std::tie(points[a].x(), a) < std::tie(points[b].x(), b);
-  });
-  for (std::size_t k = 0; k < by_x.size(); ++k) {
-    const Point2& p = points[by_x[k]];
-    for (std::size_t l = k + 1; l < by_x.size() && points[by_x[l]].x() - p.x() <= tolerance; ++l) {
-      if ((points[by_x[l]] - p).norm() <= tolerance) same.unite(by_x[k], by_x[l]);
+  // Points by the cell `tolerance` wide that holds them: each is compared with those of its cell
+  // and the eight around it (a sweep in x alone goes quadratic along a lattice's columns).
+  const auto cell_of = [&](Index v) {
+    return std::pair<std::int64_t, std::int64_t>(static_cast<std::int64_t>(std::floor(points[v].x() / tolerance)),
+                                                 static_cast<std::int64_t>(std::floor(points[v].y() / tolerance)));
+  };
+  std::vector<std::pair<std::pair<std::int64_t, std::int64_t>, Index>> by_cell(points.size());
+  tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t v) { by_cell[v] = {cell_of(static_cast<Index>(v)), static_cast<Index>(v)}; });
+  tbb::parallel_sort(by_cell.begin(), by_cell.end());
+  for (const auto& [cell, a] : by_cell) {
+    for (std::int64_t i = cell.first - 1; i <= cell.first + 1; ++i) {
+      for (std::int64_t j = cell.second - 1; j <= cell.second + 1; ++j) {
+        auto it = std::lower_bound(by_cell.begin(), by_cell.end(), std::make_pair(std::make_pair(i, j), Index{0}));
+        for (; it != by_cell.end() && it->first == std::make_pair(i, j); ++it) {
+          if (a < it->second && (points[a] - points[it->second]).norm() <= tolerance) same.unite(a, it->second);
+        }
+      }
     }
   }
   PlaneAssembly out;

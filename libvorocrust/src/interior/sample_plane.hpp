@@ -5,7 +5,7 @@
 // r + L |x - c|, bounded by the sizing field. Seeds keep that spacing from every seed and stay
 // outside every circle by kClearance of its radius. Random: a maximal Poisson-disk sample grown
 // from the boundary seeds (Bridson's dart throwing round each accepted seed). Lattice: a
-// hexagonal lattice at the median circle radius (or max_size) where the spacing allows it, the
+// hexagonal lattice at `lattice_spacing` (the widest circle's radius, at most max_size) where the spacing allows it, the
 // rest as Random. Each seed of `seed` gives the same seeds.
 #pragma once
 

@@ -93,6 +93,20 @@ PlanarDomain prepare_planar_domain(const PlanarDomain& input) {
   for (const std::array<Index, 2>& s : d.segments) {
     if (s[0] >= d.points.size() || s[1] >= d.points.size()) throw Error(Error::Kind::InvalidGeometry, "a segment names a point that does not exist", {.file = d.file});
   }
+  // Lengths, areas and the grid below square the coordinates: they must stay finite.
+  Eigen::AlignedBox2d extent;
+  double largest = 0;
+  for (const Point2& p : d.points) {
+    extent.extend(p);
+    largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  }
+  if (!(extent.diagonal().squaredNorm() < 1e300)) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%g", largest);
+    throw Error(Error::Kind::InvalidGeometry, std::string("the points span more than lengths in double precision can measure (coordinates up to ") +
+                                                  text + "): scale the domain",
+                {.file = d.file});
+  }
   // Points given twice become one.
   std::map<std::pair<double, double>, Index> first_at;
   std::vector<Index> same(d.points.size());

@@ -196,10 +196,9 @@ PlaneMesh mesh_plane(const PlanarDomain& input, const PlaneOptions& options) {
   frame = Eigen::AlignedBox2d(frame.min() - Point2::Constant(margin), frame.max() + Point2::Constant(margin));
 
   const interior::PlaneSpacing spacing(protection.circles, sizing, options.lipschitz, frame.diagonal().norm() / 8, frame);
-  std::vector<double> radii;
-  for (const PlaneCircle& c : protection.circles) radii.push_back(c.radius);
-  std::nth_element(radii.begin(), radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2), radii.end());
-  const double lattice = std::min(options.max_size, radii[radii.size() / 2]);
+  // The lattice's spacing: the boundary's coarsest (the widest circle), at most max_size; where
+  // the spacing is smaller, darts fill in.
+  const double lattice = std::min(options.max_size, widest);
   std::vector<Seed> seeds = boundary.seeds;
   const std::size_t first_interior = seeds.size();
   clock("interior", [&] {

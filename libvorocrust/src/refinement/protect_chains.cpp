@@ -289,10 +289,27 @@ class Protection {
         tree.within(p, kCoverMargin * largest, near);
         for (std::uint32_t q : near) {
           if (q == i || q == j || !((p - centres[q]).norm() < kCoverMargin * out.circles[q].radius)) continue;
-          // A corner's circle near the seeds of its first circle and the next: the next one,
-          // smaller, moves them off the corner's circle; the corner's wedge stays as it is.
-          if (out.circles[q].corner && (next_to(q, i) || next_to(q, j))) {
-            to_shrink.insert(next_to(q, i) ? j : i);
+          // A corner's circle and the seeds of a chain leaving it: they lie just outside it, the
+          // nearer the smaller the angle between the corner's chains; only inside it do they
+          // count, and then the chain's circles shrink, which moves them off it, and the
+          // corner's circle stays.
+          const std::vector<std::uint32_t>& row = out.along[chain];
+          // The chain's first circle stays too: smaller, it would draw the seeds nearer the
+          // corner's circle. A chain too short for both corners' circles shrinks them.
+          if (out.circles[q].corner && !row.empty() && (row.front() == q || row.back() == q)) {
+            if (!((p - centres[q]).norm() < out.circles[q].radius)) continue;
+            bool moved = false;
+            for (const std::uint32_t c : {i, j}) {
+              if (out.circles[c].corner || next_to(q, c)) continue;
+              to_shrink.insert(c);
+              moved = true;
+            }
+            if (!moved) {
+              to_shrink.insert(q);
+              for (const std::uint32_t c : {i, j}) {
+                if (out.circles[c].corner) to_shrink.insert(c);
+              }
+            }
             continue;
           }
           to_shrink.insert(q);
