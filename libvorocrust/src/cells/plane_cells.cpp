@@ -158,8 +158,8 @@ PlaneAssembly weld_plane_cells(const std::vector<PlanePolygon>& cells, const std
       if ((points[a] - points[b]).norm() <= tolerance) same.unite(a, b);
     }
   }
-  // Points by the cell `tolerance` wide that holds them: each is compared with those of its cell
-  // and the eight around it (a sweep in x alone goes quadratic along a lattice's columns).
+  // Points by the cell `tolerance` wide that holds them, compared with those of the neighbouring
+  // cells (a sweep in x alone goes quadratic along a lattice's columns).
   const auto cell_of = [&](Index v) {
     return std::pair<std::int64_t, std::int64_t>(static_cast<std::int64_t>(std::floor(points[v].x() / tolerance)),
                                                  static_cast<std::int64_t>(std::floor(points[v].y() / tolerance)));
@@ -167,15 +167,17 @@ PlaneAssembly weld_plane_cells(const std::vector<PlanePolygon>& cells, const std
   std::vector<std::pair<std::pair<std::int64_t, std::int64_t>, Index>> by_cell(points.size());
   tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t v) { by_cell[v] = {cell_of(static_cast<Index>(v)), static_cast<Index>(v)}; });
   tbb::parallel_sort(by_cell.begin(), by_cell.end());
-  for (const auto& [cell, a] : by_cell) {
-    for (std::int64_t i = cell.first - 1; i <= cell.first + 1; ++i) {
-      for (std::int64_t j = cell.second - 1; j <= cell.second + 1; ++j) {
-        auto it = std::lower_bound(by_cell.begin(), by_cell.end(), std::make_pair(std::make_pair(i, j), Index{0}));
-        for (; it != by_cell.end() && it->first == std::make_pair(i, j); ++it) {
-          if (a < it->second && (points[a] - points[it->second]).norm() <= tolerance) same.unite(a, it->second);
-        }
-      }
-    }
+  // Each pair of neighbouring cells is looked at from its lower one: the same column (this cell
+  // and the next, which follow in the order) and the next column (rows j - 1 to j + 1, found by
+  // one search).
+  const auto near = [&](Index a, Index b) {
+    if ((points[a] - points[b]).norm() <= tolerance) same.unite(a, b);
+  };
+  for (auto k = by_cell.begin(); k != by_cell.end(); ++k) {
+    const auto [i, j] = k->first;
+    for (auto l = k + 1; l != by_cell.end() && l->first.first == i && l->first.second <= j + 1; ++l) near(k->second, l->second);
+    auto l = std::lower_bound(k, by_cell.end(), std::make_pair(std::make_pair(i + 1, j - 1), Index{0}));
+    for (; l != by_cell.end() && l->first.first == i + 1 && l->first.second <= j + 1; ++l) near(k->second, l->second);
   }
   PlaneAssembly out;
   std::vector<Index> renumber(points.size(), static_cast<Index>(-1));
