@@ -121,17 +121,20 @@ void bind_plane(py::module_& m) {
           "each cell's vertices, counter-clockwise")
       .def_property_readonly("regions", [](const PlaneRun& r) { return column<std::int32_t>(r.mesh().cells, [](const PlaneCell& c) { return c.region; }); },
                              "each cell's region label")
-      .def_property_readonly("areas", [](const PlaneRun& r) { return column<double>(r.mesh().cells, [](const PlaneCell& c) { return c.area; }); })
-      .def_property_readonly("centroids", [](const PlaneRun& r) { return xy(r.mesh().cells, [](const PlaneCell& c) { return c.centroid; }); })
+      .def_property_readonly("areas", [](const PlaneRun& r) { return column<double>(r.mesh().cells, [](const PlaneCell& c) { return c.area; }); },
+                             "each cell's area")
+      .def_property_readonly("centroids", [](const PlaneRun& r) { return xy(r.mesh().cells, [](const PlaneCell& c) { return c.centroid; }); },
+                             "each cell's centroid, n x 2")
       .def_property_readonly("cell_seeds", [](const PlaneRun& r) { return column<std::int64_t>(r.mesh().cells, [](const PlaneCell& c) { return c.seed; }); },
                              "each cell's seed, an index into seeds")
       .def_property_readonly(
           "seeds",
           [](const PlaneRun& r) { return xy(r.mesh().seeds, [](const Seed& s) { return s.position; }); },
           "every seed, meshed or not, n x 2")
-      .def_property_readonly("seed_labels", [](const PlaneRun& r) { return column<std::int32_t>(r.mesh().seeds, [](const Seed& s) { return s.region; }); })
+      .def_property_readonly("seed_labels", [](const PlaneRun& r) { return column<std::int32_t>(r.mesh().seeds, [](const Seed& s) { return s.region; }); },
+                             "every seed's region label (0: not meshed)")
       .def_property_readonly("region_names", [](const PlaneRun& r) { return r.mesh().region_names; }, "names by label; 0 is outside")
-      .def_property_readonly("summary", [](const PlaneRun& r) { return r.result->summary; })
+      .def_property_readonly("summary", [](const PlaneRun& r) { return r.result->summary; }, "the run's summary lines")
       .def_property_readonly(
           "quality",
           [](const PlaneRun& r) {
