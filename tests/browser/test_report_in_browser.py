@@ -15,7 +15,7 @@ import unittest
 
 VOROCRUST, MODELS = sys.argv[1:3]
 CHROMIUM = shutil.which("chromium")
-TABLES = ["summary", "regions", "surface-quality", "cell-quality", "worst-cells", "timings"]
+TABLES = ["summary", "regions", "surface-quality", "cell-quality", "cell-parts", "worst-cells", "timings"]
 PICTURES = ["surface-picture", "cut-picture", "worst-cells-picture", "histograms"]
 
 # Runs in the page once everything has loaded and writes what it found into the document, which
@@ -77,6 +77,9 @@ class ReportInBrowser(unittest.TestCase):
             self.assertGreater(table["rows"], 1, name)
         self.assertEqual(found["tables"]["regions"]["rows"], 1 + len(report["regions"]))
         self.assertEqual(found["tables"]["worst-cells"]["rows"], 1 + min(20, report["cells"]["cells"]))
+        layers = report["cells"]["quality"]["layers"]
+        self.assertEqual(found["tables"]["cell-parts"]["rows"],
+                         1 + 3 * ((layers["boundary_layer_cells"] > 0) + (layers["interior_cells"] > 0)))
 
 
 if __name__ == "__main__":

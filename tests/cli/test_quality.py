@@ -182,6 +182,10 @@ class Quality(unittest.TestCase):
         self.assertRegex(r.stdout, r"aspect ratio\s+min 1\.291, mean 1\.291, max 1\.291 \(cell \d+, seed \d+\); 0 above 5")
         self.assertRegex(r.stdout, r"faces per cell\s+min 14, mean 14\.00, max 14")
         self.assertIn("total %.10g\n" % (cells / 2), r.stdout)
+        # Edges sqrt(2)/4 against a size of cbrt(1/2); none short. The core's outer cells have a
+        # face to no cell: the boundary layer.
+        self.assertRegex(r.stdout, r"\ninterior\s+\d+ cells\n  edges / size\s+min 0\.4454 \(cell \d+\); 0% below 0\.01, 0%")
+        self.assertRegex(r.stdout, r"dihedral angles\s+min 109\.5, mean 120, max 125\.3 degrees")
         texts = svg_texts(os.path.join(self.out, "quality.svg"))
         self.assertIn("cell quality: " + os.path.join(self.out, "seeds.csv"), texts)
         self.assertNotIn("triangle quality Q = 6S / (sqrt(3) h p) of the output surface", texts)
@@ -211,11 +215,15 @@ class Quality(unittest.TestCase):
         self.assertIn("surface and cell quality: " + self.out, texts)
         self.assertIn("triangle quality Q = 6S / (sqrt(3) h p) of the output surface", texts)
         self.assertIn("cell aspect ratio R / r (circumradius over inradius)", texts)
-        self.assertEqual(sum(1 for t in texts if t.startswith("min ")), 2)
-        self.assertEqual(sum(1 for t in texts if t.startswith("mean ")), 2)
-
         r = run("quality", self.out, "--samples", "2000", "--json")
         doc = json.loads(r.stdout)
+        # The surface, the aspect ratios, then edges, faces and dihedral angles per layer with cells.
+        layers = doc["cells"]["layers"]
+        self.assertGreater(layers["boundary_layer_cells"], 0)
+        panels = 2 + 3 * ((layers["boundary_layer_cells"] > 0) + (layers["interior_cells"] > 0))
+        self.assertEqual(sum(1 for t in texts if t.startswith("min ")), panels)
+        self.assertEqual(sum(1 for t in texts if t.startswith("mean ")), panels)
+        self.assertIn("edge length / cell size, boundary layer (%d cells)" % layers["boundary_layer_cells"], texts)
         with open(os.path.join(self.out, "seeds.csv")) as f:
             inside = sum(1 for line in f.readlines()[1:] if line.split(",")[3] == "1")
         self.assertEqual(doc["cells"]["cells"], inside)

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <set>
 #include <tuple>
 
 #include "cells/seed_sets.hpp"
@@ -90,17 +91,126 @@ TEST(CellQuality, HandMadePolyhedra) {
   EXPECT_NEAR(measure_cell_quality(reversed).max_aspect_ratio, std::sqrt(6.0), 1e-13);
 }
 
+// Seeds far enough inside the lattice that their cells are whole lattice cells.
+std::function<std::int32_t(const Point&)> core(double lo, double hi) {
+  return [=](const Point& p) { return (p.array() >= lo).all() && (p.array() <= hi).all() ? 1 : 0; };
+}
+
+TEST(CellQuality, PartsOfABox) {
+  // One cell with every face to no cell: the boundary layer. Size cbrt(2); edges 1 (eight) and 2
+  // (four), faces 1 x 1 (two) and 1 x 2 (four), twelve right angles.
+  const CellQuality q = measure_cell_quality(box_mesh(1, 1, 2));
+  const double size = std::cbrt(2.0);
+  EXPECT_EQ(q.interior.cells, 0u);
+  EXPECT_EQ(q.interior.edge_length.count, 0u);
+  EXPECT_EQ(q.interior.edge_length.min, 0);
+  const LayerParts& layer = q.boundary_layer;
+  EXPECT_EQ(layer.cells, 1u);
+  EXPECT_EQ(layer.edge_length.count, 12u);
+  EXPECT_NEAR(layer.edge_length.min, 1 / size, 1e-15);
+  EXPECT_NEAR(layer.edge_length.max, 2 / size, 1e-15);
+  EXPECT_NEAR(layer.edge_length.mean, (8 + 4 * 2) / 12.0 / size, 1e-15);
+  EXPECT_EQ(layer.edge_length.above_high, 0u);
+  EXPECT_EQ(layer.edge_length.histogram[static_cast<std::size_t>(20 / size)], 8u);  // bins 0.05 wide
+  EXPECT_EQ(layer.edge_length.histogram[static_cast<std::size_t>(40 / size)], 4u);
+  EXPECT_EQ(layer.edge_length.below, (std::vector<std::size_t>{0, 0, 0}));
+  EXPECT_EQ(layer.face_area.count, 6u);
+  EXPECT_NEAR(layer.face_area.min, 1 / (size * size), 1e-15);
+  EXPECT_EQ(layer.face_area.above_high, 0u);
+  EXPECT_EQ(layer.face_area.histogram[static_cast<std::size_t>(40 / size / size)], 4u);
+  EXPECT_EQ(layer.dihedral_angle.count, 12u);
+  EXPECT_NEAR(layer.dihedral_angle.min, 90, 1e-12);
+  EXPECT_NEAR(layer.dihedral_angle.max, 90, 1e-12);
+  EXPECT_EQ(layer.dihedral_angle.histogram[9], 12u);  // [90, 100)
+  EXPECT_EQ(layer.dihedral_angle.percent_below(0), 0);
+}
+
+TEST(CellQuality, PartsOfTruncatedOctahedra) {
+  // The BCC lattice's cell, of edge e = sqrt(2)/4 and volume 1/2: 36 equal edges, 8 hexagons of
+  // area 3 sqrt(3)/2 e^2 and 6 squares of e^2, dihedral angles acos(-1/3) at the 12 edges between
+  // hexagons and acos(-1/sqrt(3)) at the 24 between a hexagon and a square. Only the core's
+  // outermost cells have a face to no cell.
+  const auto seeds = test::bcc_seeds(6, core(1.25, 3.75));
+  const VoronoiMesh mesh = compute_cells(seeds);
+  const CellQuality q = measure_cell_quality(mesh);
+  const double size = std::cbrt(0.5), e = std::sqrt(2.0) / 4;
+  ASSERT_GT(q.interior.cells, 0u);
+  ASSERT_GT(q.boundary_layer.cells, 0u);
+  EXPECT_EQ(q.interior.cells + q.boundary_layer.cells, mesh.cells.size());
+  for (const LayerParts* layer : {&q.interior, &q.boundary_layer}) {
+    const std::size_t n = layer->cells;
+    EXPECT_EQ(layer->edge_length.count, 36 * n);
+    EXPECT_NEAR(layer->edge_length.min, e / size, 1e-12);
+    EXPECT_NEAR(layer->edge_length.max, e / size, 1e-12);
+    EXPECT_EQ(layer->face_area.count, 14 * n);
+    EXPECT_NEAR(layer->face_area.min, e * e / (size * size), 1e-12);
+    EXPECT_NEAR(layer->face_area.max, 3 * std::sqrt(3.0) / 2 * e * e / (size * size), 1e-12);
+    EXPECT_EQ(layer->dihedral_angle.count, 36 * n);
+    EXPECT_NEAR(layer->dihedral_angle.min, std::acos(-1.0 / 3) * 180 / M_PI, 1e-9);
+    EXPECT_NEAR(layer->dihedral_angle.max, std::acos(-1 / std::sqrt(3.0)) * 180 / M_PI, 1e-9);
+    EXPECT_EQ(layer->dihedral_angle.histogram[10], 12 * n);  // 109.47 in [100, 110)
+    EXPECT_EQ(layer->dihedral_angle.histogram[12], 24 * n);  // 125.26 in [120, 130)
+  }
+}
+
+// Every cell's edges counted by hand: each edge once per cell, against that cell's size, in the
+// layer its faces say. Two materials, so the cells along their interface are boundary layer too.
+TEST(CellQuality, PartsAgreeWithACountByHand) {
+  const auto seeds = test::lattice_seeds(9, 0.45, test::split_box_region(0.5, 7.5, 4), 5);
+  const VoronoiMesh mesh = compute_cells(seeds);
+  const CellQuality q = measure_cell_quality(mesh);
+  std::size_t layer_cells = 0, layer_edges = 0, layer_short = 0, interior_edges = 0, interior_short = 0,
+              interface_cells = 0;
+  double shortest = std::numeric_limits<double>::infinity();
+  std::size_t shortest_cell = 0;
+  for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
+    const VoronoiCell& cell = mesh.cells[c];
+    bool on_surface = false, on_interface = false;
+    std::set<std::pair<Index, Index>> edges;
+    for (Index f : cell.faces) {
+      const VoronoiFace& face = mesh.faces[f];
+      const std::int32_t other = face.owner == static_cast<std::int32_t>(c) ? face.neighbour : face.owner;
+      on_interface |= other != kNoCell && mesh.cells[other].region != cell.region;
+      on_surface |= other == kNoCell || mesh.cells[other].region != cell.region;
+      for (std::size_t k = 0; k < face.points.size(); ++k) {
+        const Index a = face.points[k], b = face.points[(k + 1) % face.points.size()];
+        edges.insert({std::min(a, b), std::max(a, b)});
+      }
+    }
+    interface_cells += on_interface;
+    layer_cells += on_surface;
+    for (const auto& [a, b] : edges) {
+      const double relative = (mesh.points[a] - mesh.points[b]).norm() / std::cbrt(cell.volume);
+      (on_surface ? layer_edges : interior_edges) += 1;
+      (on_surface ? layer_short : interior_short) += relative < 0.1;
+      if (relative < shortest) shortest = relative, shortest_cell = c;
+    }
+  }
+  ASSERT_GT(interface_cells, 20u);
+  EXPECT_EQ(q.boundary_layer.cells, layer_cells);
+  EXPECT_EQ(q.boundary_layer.edge_length.count, layer_edges);
+  EXPECT_EQ(q.interior.edge_length.count, interior_edges);
+  EXPECT_EQ(q.boundary_layer.edge_length.below[2], layer_short);
+  EXPECT_EQ(q.interior.edge_length.below[2], interior_short);
+  ASSERT_GT(layer_short + interior_short, 0u);  // a jitter of 0.45 makes short edges
+  const PartDistribution& holder =
+      q.boundary_layer.edge_length.min < q.interior.edge_length.min ? q.boundary_layer.edge_length : q.interior.edge_length;
+  EXPECT_EQ(holder.min, shortest);
+  EXPECT_EQ(holder.min_cell, shortest_cell);
+  for (const LayerParts* layer : {&q.interior, &q.boundary_layer}) {
+    const PartDistribution& d = layer->dihedral_angle;
+    EXPECT_EQ(std::accumulate(d.histogram.begin(), d.histogram.end(), d.above_high), d.count);
+    EXPECT_GT(d.min, 0);
+    EXPECT_LT(d.max, 180);  // convex cells
+  }
+}
+
 struct LatticeCase {
   const char* name;
   std::vector<Seed> seeds;
   double aspect_ratio, volume, shortest_edge;
   std::size_t faces;
 };
-
-// Seeds far enough inside the lattice that their cells are whole lattice cells.
-std::function<std::int32_t(const Point&)> core(double lo, double hi) {
-  return [=](const Point& p) { return (p.array() >= lo).all() && (p.array() <= hi).all() ? 1 : 0; };
-}
 
 TEST(CellQuality, LatticeCellsHaveTheirExactFigures) {
   const std::vector<LatticeCase> cases = {
@@ -298,6 +408,13 @@ TEST(CellQuality, SameFiguresForOneAndTwoThreads) {
   EXPECT_EQ(a.mean_aspect_ratio, b.mean_aspect_ratio);
   EXPECT_EQ(a.total_volume, b.total_volume);
   EXPECT_EQ(a.aspect_ratio_histogram, b.aspect_ratio_histogram);
+  for (auto layer : {&CellQuality::boundary_layer, &CellQuality::interior}) {
+    for (auto part : {&LayerParts::edge_length, &LayerParts::face_area, &LayerParts::dihedral_angle}) {
+      EXPECT_EQ((a.*layer.*part).mean, (b.*layer.*part).mean);
+      EXPECT_EQ((a.*layer.*part).histogram, (b.*layer.*part).histogram);
+      EXPECT_EQ((a.*layer.*part).min_cell, (b.*layer.*part).min_cell);
+    }
+  }
 }
 
 void expect_error(const VoronoiMesh& mesh, const CellQualityOptions& options, Error::Kind kind,

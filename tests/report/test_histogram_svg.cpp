@@ -117,6 +117,26 @@ TEST(HistogramSvg, SurfaceAndCellPanelsTogether) {
   EXPECT_EQ(occurrences(svg, ">mean "), 2u);
 }
 
+// The cells' parts: edges, faces and dihedral angles, each for the boundary layer and the
+// interior; a layer without cells gets no panel.
+TEST(HistogramSvg, CellPartPanelsByLayer) {
+  const auto seeds = test::lattice_seeds(8, 0.3, test::ball_region(Point(3.5, 3.5, 3.5), 2.9), 6);
+  const CellQuality cells = measure_cell_quality(compute_cells(seeds));
+  const std::vector<HistogramPanel> panels = cell_part_panels(cells);
+  ASSERT_EQ(panels.size(), 6u);
+  EXPECT_EQ(panels[0].label, "edge length / cell size, boundary layer (" +
+                                 std::to_string(cells.boundary_layer.cells) + " cells)");
+  EXPECT_EQ(panels[0].counts, cells.boundary_layer.edge_length.histogram);
+  EXPECT_EQ(panels[1].min, cells.interior.edge_length.min);
+  EXPECT_EQ(panels[3].above_high, cells.interior.face_area.above_high);
+  EXPECT_EQ(panels[5].mean, cells.interior.dihedral_angle.mean);
+  EXPECT_EQ(quality_panels(std::nullopt, cells).size(), 7u);
+
+  CellQuality no_interior = cells;
+  no_interior.interior = {};
+  EXPECT_EQ(cell_part_panels(no_interior).size(), 3u);
+}
+
 TEST(HistogramSvg, RefusesPanelsWithoutBinsOrRange) {
   HistogramPanel empty = quality_panel();
   empty.counts.clear();

@@ -56,6 +56,16 @@ TEST(QualityReport, CellJsonHoldsTheVolumeFigures) {
   EXPECT_EQ(doc["faces"]["min"], q.min_faces);
   EXPECT_EQ(doc["faces"]["max"], q.max_faces);
   EXPECT_EQ(doc["shortest_edge"]["min"].get<double>(), q.min_shortest_edge_relative);
+  EXPECT_EQ(doc["layers"]["interior_cells"], q.interior.cells);
+  EXPECT_EQ(doc["layers"]["boundary_layer_cells"], q.boundary_layer.cells);
+  const auto& short_edges = doc["edge_length"]["interior"];
+  EXPECT_EQ(short_edges["min"].get<double>(), q.interior.edge_length.min);
+  EXPECT_EQ(short_edges["min_cell"], q.interior.edge_length.min_cell);
+  EXPECT_EQ(short_edges["thresholds"][2]["below"].get<double>(), 0.1);
+  EXPECT_EQ(short_edges["thresholds"][2]["count"], q.interior.edge_length.below[2]);
+  EXPECT_EQ(doc["face_area"]["boundary_layer"]["histogram"]["counts"].get<std::vector<std::size_t>>(),
+            q.boundary_layer.face_area.histogram);
+  EXPECT_EQ(doc["dihedral_angle"]["boundary_layer"]["max"].get<double>(), q.boundary_layer.dihedral_angle.max);
 
   // A cell without interior: JSON has no infinity, so null.
   CellQuality flat = q;

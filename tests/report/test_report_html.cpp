@@ -96,7 +96,8 @@ TEST_F(ReportHtml, IsWrittenBesideReportJsonAndNothingElse) {
 }
 
 TEST_F(ReportHtml, HoldsEveryTableWithTheRunsFigures) {
-  for (const char* id : {"summary", "regions", "surface-quality", "cell-quality", "worst-cells", "timings"}) {
+  for (const char* id :
+       {"summary", "regions", "surface-quality", "cell-quality", "cell-parts", "worst-cells", "timings"}) {
     EXPECT_FALSE(element(*html_, id, "table").empty()) << id;
   }
   const std::string summary = element(*html_, "summary", "table");
@@ -117,6 +118,11 @@ TEST_F(ReportHtml, HoldsEveryTableWithTheRunsFigures) {
                                 "</td><td class=\"n\">" + std::to_string(quality.worst_seed) + "</td>";
   EXPECT_NE(worst.find(first_row), std::string::npos) << worst.substr(0, 400);
   EXPECT_NE(element(*html_, "cell-quality", "table").find(report::locale_free_number(quality.max_aspect_ratio, std::chars_format::general, 4)),
+            std::string::npos);
+  // The short edges by layer: three measures for each layer with cells.
+  const std::string parts = element(*html_, "cell-parts", "table");
+  EXPECT_EQ(occurrences(parts, "<tr>"), 1 + 3 * ((quality.boundary_layer.cells > 0) + (quality.interior.cells > 0)));
+  EXPECT_NE(parts.find(report::locale_free_number(quality.boundary_layer.edge_length.min, std::chars_format::general, 4)),
             std::string::npos);
 }
 

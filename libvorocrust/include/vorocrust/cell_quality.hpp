@@ -12,6 +12,14 @@
 // - shortest edge relative to the cell's size: the shortest edge of its faces divided by the
 //   cube root of its volume, 1 for a cube, so a short edge reads the same in a large cell and a
 //   small one.
+// Per cell part, over all cells (the short edges and tiny faces the paper names as its main
+// limitation): each edge's length over the cell's size (the cube root of its volume), each face's
+// area over the size squared, and the dihedral angle inside the cell at each edge, between the
+// two faces meeting there (180 degrees minus the angle between their outward normals; an edge of
+// a face without area has none). A part is counted once for each cell it bounds, against that
+// cell's size, so an edge of three cells counts three times. The figures are split between the
+// boundary layer, the cells with a face on the surface (to no cell, or to a cell of another
+// material), where the seeds lie on the protecting balls, and the interior cells.
 // Per face with a cell on each side: the angle between its normal and the link between the two
 // seeds (face_orthogonality.hpp; 0 for Voronoi cells up to rounding) and, as OpenFOAM's checkMesh
 // measures them, the angle to the link between the cells' centroids (its "non-orthogonality")
@@ -62,6 +70,29 @@ struct VOROCRUST_API CellShape {
   double shortest_edge_relative = 0;  // shortest_edge / cbrt(volume); 0 without volume
 };
 
+// How one measure of many cell parts is spread.
+struct VOROCRUST_API PartDistribution {
+  std::size_t count = 0;
+  double min = 0, mean = 0, max = 0;  // 0 when count is 0
+  std::size_t min_cell = 0;           // the cell of the smallest (the first of equals)
+  // Bins evenly over [low, high] (0 to 2 in 40 bins for lengths and areas, 0 to 180 degrees in 18
+  // for angles), values below low in the first; those above high counted apart.
+  double low = 0, high = 1;
+  std::vector<std::size_t> histogram;
+  std::size_t above_high = 0;
+  std::vector<double> thresholds;  // ascending
+  std::vector<std::size_t> below;  // per threshold, the parts strictly below it
+  // 100 below[k] / count; 0 without parts.
+  double percent_below(std::size_t k) const;
+};
+
+struct VOROCRUST_API LayerParts {
+  std::size_t cells = 0;
+  PartDistribution edge_length;     // edge / cbrt(volume); thresholds 0.01, 0.05, 0.1
+  PartDistribution face_area;       // area / cbrt(volume)^2; thresholds 1e-4, 1e-3, 0.01
+  PartDistribution dihedral_angle;  // degrees; thresholds 10, 20
+};
+
 struct VOROCRUST_API CellQuality {
   std::vector<CellShape> cells;  // one per VoronoiMesh::cells, in its order
 
@@ -77,6 +108,8 @@ struct VOROCRUST_API CellQuality {
   double mean_faces = 0;
   double min_shortest_edge_relative = 0, mean_shortest_edge_relative = 0;
   std::size_t shortest_edge_cell = 0;  // the cell of the smallest relative edge (the first of equals)
+
+  LayerParts boundary_layer, interior;  // see the top of this header
 
   // Face skewness as checkMesh measures it (face_skewness.hpp): the largest, its face, and the
   // faces above checkMesh's threshold of 4, which fail its check.

@@ -36,7 +36,13 @@ VOROCRUST_API HistogramPanel surface_quality_panel(const SurfaceQuality& quality
 // The cell aspect-ratio panel of OUTDIR/quality.svg, with the cells above its range as overflow.
 VOROCRUST_API HistogramPanel cell_quality_panel(const CellQuality& quality);
 
-// The panels of quality.svg: the surface's, then the cells', each where its quality is given.
+// The panels of the cells' edge lengths and face areas against the cell size (the cube root of its
+// volume) and of their dihedral angles (cell_quality.hpp), each for the boundary layer and the
+// interior where that layer has cells.
+VOROCRUST_API std::vector<HistogramPanel> cell_part_panels(const CellQuality& quality);
+
+// The panels of quality.svg: the surface's, then the cells' (aspect ratio, then their parts), each
+// where its quality is given.
 VOROCRUST_API std::vector<HistogramPanel> quality_panels(const std::optional<SurfaceQuality>& surface,
                                                          const std::optional<CellQuality>& cells);
 

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <string>
 
+#include "quality/cell_parts.hpp"
 #include "quality/face_figures.hpp"
 #include "geometry/cell_spheres.hpp"
 #include "vorocrust/cell_quality.hpp"
@@ -136,6 +137,7 @@ CellQuality measure_cell_quality(const VoronoiMesh& mesh, const CellQualityOptio
                       [&](std::size_t c) { q.cells[c] = measure_cell(mesh, mesh.cells[c]); });
   });
   summarise(mesh, options, q);
+  quality::measure_cell_parts(mesh, arena, q);
   struct FaceFigures {
     double skewness = 0, link_angle = 0, non_orthogonality = 0;
   };

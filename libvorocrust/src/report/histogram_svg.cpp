@@ -66,7 +66,6 @@ void draw_panel(std::ostream& svg, const HistogramPanel& panel, double top) {
   svg << "</text>\n";
 
   // Bars, each non-empty one at least a hairline high, with its count above it where it fits.
-  const bool label_counts = bar >= 14;
   for (std::size_t k = 0; k < bars.size(); ++k) {
     const std::size_t n = bars[k];
     if (n == 0) continue;
@@ -74,7 +73,7 @@ void draw_panel(std::ostream& svg, const HistogramPanel& panel, double top) {
     svg << "<rect x=\"" << coordinate(x0 + bar * static_cast<double>(k) + 1) << "\" y=\"" << coordinate(y)
         << "\" width=\"" << coordinate(std::max(1.0, bar - 2)) << "\" height=\"" << coordinate(y0 - y)
         << "\" fill=\"" << (k < bins ? "#4a7fb5" : "#b5834a") << "\"/>\n";
-    if (label_counts) {
+    if (bar >= 5.5 * static_cast<double>(std::to_string(n).size()) + 2) {  // digits about 5.5 wide at size 9
       svg << "<text x=\"" << coordinate(x0 + bar * (static_cast<double>(k) + 0.5)) << "\" y=\""
           << coordinate(y - 3) << "\" font-size=\"9\" text-anchor=\"middle\">" << n << "</text>\n";
     }
@@ -166,11 +165,31 @@ HistogramPanel cell_quality_panel(const CellQuality& quality) {
   return panel;
 }
 
+std::vector<HistogramPanel> cell_part_panels(const CellQuality& quality) {
+  std::vector<HistogramPanel> panels;
+  const auto add = [&](const char* measure, PartDistribution LayerParts::*part) {
+    for (const auto& [layer, name] : {std::pair{&quality.boundary_layer, "boundary layer"},
+                                      std::pair{&quality.interior, "interior"}}) {
+      const PartDistribution& d = layer->*part;
+      if (d.count == 0) continue;
+      panels.push_back({std::string(measure) + ", " + name + " (" + std::to_string(layer->cells) + " cells)", d.low,
+                        d.high, d.histogram, d.min, d.mean, d.above_high});
+    }
+  };
+  add("edge length / cell size", &LayerParts::edge_length);
+  add("face area / cell size squared", &LayerParts::face_area);
+  add("dihedral angle (degrees)", &LayerParts::dihedral_angle);
+  return panels;
+}
+
 std::vector<HistogramPanel> quality_panels(const std::optional<SurfaceQuality>& surface,
                                            const std::optional<CellQuality>& cells) {
   std::vector<HistogramPanel> panels;
   if (surface) panels.push_back(surface_quality_panel(*surface));
-  if (cells) panels.push_back(cell_quality_panel(*cells));
+  if (cells) {
+    panels.push_back(cell_quality_panel(*cells));
+    for (HistogramPanel& panel : cell_part_panels(*cells)) panels.push_back(std::move(panel));
+  }
   return panels;
 }
 

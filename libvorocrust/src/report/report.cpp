@@ -136,6 +136,27 @@ json quality_object(const SurfaceQuality& q) {
 // A figure that may be infinite (a cell without interior): null then, JSON having no infinity.
 json finite_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
+json distribution_object(const PartDistribution& d) {
+  json below = json::array();
+  for (std::size_t k = 0; k < d.thresholds.size(); ++k) {
+    below.push_back({{"below", d.thresholds[k]}, {"count", d.below[k]}, {"percent", d.percent_below(k)}});
+  }
+  return {{"count", d.count},
+          {"min", d.min},
+          {"mean", d.mean},
+          {"max", d.max},
+          {"min_cell", d.min_cell},
+          {"thresholds", below},
+          {"histogram", {{"low", d.low}, {"high", d.high}, {"counts", d.histogram}, {"above_high", d.above_high}}}};
+}
+
+// One measure of the cells' parts, by layer.
+json layers_object(const CellQuality& q, const char* definition, PartDistribution LayerParts::*measure) {
+  return {{"definition", definition},
+          {"boundary_layer", distribution_object(q.boundary_layer.*measure)},
+          {"interior", distribution_object(q.interior.*measure)}};
+}
+
 // The paper's section 3 volume figure, the maximum aspect ratio, with its distribution and the
 // other per-cell measures.
 json cell_quality_object(const CellQuality& q) {
@@ -160,6 +181,19 @@ json cell_quality_object(const CellQuality& q) {
             {"min", q.min_shortest_edge_relative},
             {"mean", q.mean_shortest_edge_relative},
             {"cell", q.shortest_edge_cell}}},
+          {"layers",
+           {{"definition",
+             "boundary_layer: cells with a face to no cell or to another material's cell; interior: the others"},
+            {"boundary_layer_cells", q.boundary_layer.cells},
+            {"interior_cells", q.interior.cells}}},
+          {"edge_length",
+           layers_object(q, "each edge of each cell / cube root of that cell's volume", &LayerParts::edge_length)},
+          {"face_area",
+           layers_object(q, "each face of each cell / the cube root of that cell's volume, squared",
+                         &LayerParts::face_area)},
+          {"dihedral_angle",
+           layers_object(q, "degrees inside each cell between the two faces at each of its edges",
+                         &LayerParts::dihedral_angle)},
           {"skewness",
            {{"definition", "checkMesh's face skewness; above 4 it calls a face highly skew"},
             {"max", q.max_skewness},

@@ -282,6 +282,19 @@ void cells_tables(std::ostream& html, const MeshResult& result, const std::vecto
          {"faces", count(q.min_faces), figure(q.mean_faces), count(q.max_faces)},
          {"shortest edge over the cube root of the volume", figure(q.min_shortest_edge_relative),
           figure(q.mean_shortest_edge_relative), "&mdash;"}});
+  std::vector<Row> parts;
+  for (const auto& [layer, name] : {std::pair{&q.boundary_layer, "boundary layer"}, std::pair{&q.interior, "interior"}}) {
+    if (layer->cells == 0) continue;
+    const auto row = [&](const std::string& measure, const PartDistribution& d, std::size_t threshold) {
+      parts.push_back({text(name), count(layer->cells), text(measure), figure(d.min), figure(d.mean),
+                       figure(d.max), figure(d.thresholds[threshold]), figure(d.percent_below(threshold))});
+    };
+    row("edge length / cell size", layer->edge_length, 0);
+    row("face area / cell size squared", layer->face_area, 0);
+    row("dihedral angle (degrees)", layer->dihedral_angle, 0);
+  }
+  table(html, "cell-parts", {"layer", "cells", "measure", "smallest", "mean", "largest", "threshold", "below it (%)"},
+        parts);
   html << "<p>" << count(q.cells.size()) << " cells, of total volume " << figure(q.total_volume) << "; "
        << count(q.aspect_ratio_above_high) << " with an aspect ratio above " << figure(q.histogram_high) << ".</p>\n";
   std::vector<Row> rows;
