@@ -154,7 +154,8 @@ TEST(CellQuality, PartsOfTruncatedOctahedra) {
 }
 
 // Every cell's edges counted by hand: each edge once per cell, against that cell's size, in the
-// layer its faces say. Two materials, so the cells along their interface are boundary layer too.
+// layer its faces say (the seeds being interior ones). Two materials, so the cells along their
+// interface are boundary layer too.
 TEST(CellQuality, PartsAgreeWithACountByHand) {
   const auto seeds = test::lattice_seeds(9, 0.45, test::split_box_region(0.5, 7.5, 4), 5);
   const VoronoiMesh mesh = compute_cells(seeds);
@@ -163,6 +164,7 @@ TEST(CellQuality, PartsAgreeWithACountByHand) {
               interface_cells = 0;
   double shortest = std::numeric_limits<double>::infinity();
   std::size_t shortest_cell = 0;
+  std::set<Index> interior_seeds;
   for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
     const VoronoiCell& cell = mesh.cells[c];
     bool on_surface = false, on_interface = false;
@@ -179,6 +181,7 @@ TEST(CellQuality, PartsAgreeWithACountByHand) {
     }
     interface_cells += on_interface;
     layer_cells += on_surface;
+    if (!on_surface) interior_seeds.insert(cell.seed);
     for (const auto& [a, b] : edges) {
       const double relative = (mesh.points[a] - mesh.points[b]).norm() / std::cbrt(cell.volume);
       (on_surface ? layer_edges : interior_edges) += 1;
@@ -197,6 +200,18 @@ TEST(CellQuality, PartsAgreeWithACountByHand) {
       q.boundary_layer.edge_length.min < q.interior.edge_length.min ? q.boundary_layer.edge_length : q.interior.edge_length;
   EXPECT_EQ(holder.min, shortest);
   EXPECT_EQ(holder.min_cell, shortest_cell);
+  // Cells of seeds on protecting spheres are boundary layer wherever they lie.
+  auto capped = seeds;
+  std::size_t deep_caps = 0;
+  for (Index i = 0; i < capped.size(); ++i) {
+    if (std::abs(capped[i].position.x() - 2) > 0.5) continue;
+    capped[i].kind = SeedKind::Cap;
+    deep_caps += interior_seeds.count(i);
+  }
+  const CellQuality with_caps = measure_cell_quality(compute_cells(capped));
+  ASSERT_GT(deep_caps, 5u);
+  EXPECT_EQ(with_caps.boundary_layer.cells, layer_cells + deep_caps);
+  EXPECT_EQ(with_caps.interior.cells, q.interior.cells - deep_caps);
   for (const LayerParts* layer : {&q.interior, &q.boundary_layer}) {
     const PartDistribution& d = layer->dihedral_angle;
     EXPECT_EQ(std::accumulate(d.histogram.begin(), d.histogram.end(), d.above_high), d.count);

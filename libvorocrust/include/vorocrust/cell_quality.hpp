@@ -18,8 +18,10 @@
 // two faces meeting there (180 degrees minus the angle between their outward normals; an edge of
 // a face without area has none). A part is counted once for each cell it bounds, against that
 // cell's size, so an edge of three cells counts three times. The figures are split between the
-// boundary layer, the cells with a face on the surface (to no cell, or to a cell of another
-// material), where the seeds lie on the protecting balls, and the interior cells.
+// boundary layer and the interior. The boundary layer is the cells whose seeds lie on protecting
+// spheres (VoronoiCell::seed_kind surface, cap or repair: placed by the surface stage, not free to
+// move) and any other cell with a face on the surface (to no cell, or to a cell of another
+// material); the interior is the cells of the seeds the interior sampler placed.
 // Per face with a cell on each side: the angle between its normal and the link between the two
 // seeds (face_orthogonality.hpp; 0 for Voronoi cells up to rounding) and, as OpenFOAM's checkMesh
 // measures them, the angle to the link between the cells' centroids (its "non-orthogonality")

@@ -158,6 +158,7 @@ struct Assembly {
       cell.seed = cell_seeds[c];
       cell.site = seeds[cell.seed].position;
       cell.region = seeds[cell.seed].region;
+      cell.seed_kind = seeds[cell.seed].kind;
       std::size_t next = first_face[c];
       for (std::size_t f = 0; f < mine.num_faces(); ++f) {
         const Index* polygon = mine.points.data() + mine.starts[f];

@@ -30,6 +30,7 @@ VoronoiMesh extrude_plane_mesh(const PlaneMesh& mesh, double thickness) {
     cell.seed = c.seed;
     cell.site = Point(seed.x(), seed.y(), thickness / 2);
     cell.region = c.region;
+    cell.seed_kind = mesh.seeds[c.seed].kind;
     cell.volume = c.area * thickness;
     cell.centroid = Point(c.centroid.x(), c.centroid.y(), thickness / 2);
     const auto add = [&](VoronoiFace face) {

@@ -82,9 +82,11 @@ void finish(PartDistribution& d) {
   }
 }
 
-// A cell with a face to no cell or to another material's cell: its seed is a surface seed.
 bool in_boundary_layer(const VoronoiMesh& mesh, std::size_t c) {
   const VoronoiCell& cell = mesh.cells[c];
+  if (cell.seed_kind == SeedKind::Surface || cell.seed_kind == SeedKind::Cap || cell.seed_kind == SeedKind::Repair) {
+    return true;
+  }
   for (Index f : cell.faces) {
     const VoronoiFace& face = mesh.faces[f];
     const std::int32_t other = static_cast<std::size_t>(face.owner) == c ? face.neighbour : face.owner;
