@@ -3,6 +3,9 @@
 // the formats' specifications in tests/cli/test_multi_material.py.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <fstream>
 #include <map>
 #include <set>
@@ -14,6 +17,8 @@
 #include "test_support.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
+#include "vorocrust/mesher.hpp"
+#include "vorocrust/read_mesh.hpp"
 #include "vorocrust/write_pflotran.hpp"
 #include "vorocrust/write_tough.hpp"
 #include "vorocrust/write_volume_mesh.hpp"
@@ -142,6 +147,53 @@ TEST(Pflotran, GridRegionsAndBoundaryConnectionsOfEveryCellAndFace) {
     boundary += k;
   }
   EXPECT_EQ(boundary, mesh.faces.size() - count_interior_faces(mesh));
+}
+
+// A real run's tiny faces (area below 1e-4 of the larger cell's size squared, the size being the
+// cube root of the volume) carry little, but a simulator must still see them: each is a
+// connection in TOUGH's MESH and PFLOTRAN's grid, with its area.
+TEST(SimulatorFiles, TinyFacesOfARealRunAreConnections) {
+  MeshOptions options;
+  options.seed = 1;
+  const VoronoiMesh mesh = generate_mesh(read_mesh(test::model("cgal_joint.off")), options).cells;
+  std::vector<std::size_t> interior;  // the connections' faces, in the order both files list them
+  std::set<std::size_t> tiny;
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    const VoronoiFace& face = mesh.faces[f];
+    if (face.neighbour == kNoCell) continue;
+    const double size = std::cbrt(std::max(mesh.cells[face.owner].volume, mesh.cells[face.neighbour].volume));
+    if (face_geometry(mesh, f).area < 1e-4 * size * size) tiny.insert(interior.size());
+    interior.push_back(f);
+  }
+  ASSERT_GT(tiny.size(), 10u);
+  const test::TempDir dir("tiny-faces");
+  write_tough_mesh(mesh, dir / "MESH");
+  write_pflotran(mesh, dir / "grid");
+
+  const auto tough = lines_of(dir / "MESH");
+  const auto conne = std::find(tough.begin(), tough.end(), "CONNE");
+  ASSERT_NE(conne, tough.end());
+  std::ifstream uge(dir / "grid/mesh.uge");
+  std::string line;
+  while (std::getline(uge, line) && line.rfind("CONNECTIONS", 0) != 0) {
+  }
+  ASSERT_EQ(line, "CONNECTIONS " + std::to_string(interior.size()));
+  for (std::size_t k = 0; k < interior.size(); ++k) {
+    ASSERT_TRUE(std::getline(uge, line));
+    if (!tiny.count(k)) continue;
+    const VoronoiFace& face = mesh.faces[interior[k]];
+    const double area = face_geometry(mesh, interior[k]).area;
+    const std::string& record = *(conne + 1 + static_cast<std::ptrdiff_t>(k));
+    EXPECT_EQ(record.substr(0, 10), tough_element_name(face.owner) + tough_element_name(face.neighbour));
+    EXPECT_NEAR(std::stod(record.substr(50, 10)), area, 1e-4 * area) << record;
+    std::istringstream fields(line);
+    long long owner = 0, neighbour = 0;
+    double x = 0, y = 0, z = 0, listed = 0;
+    fields >> owner >> neighbour >> x >> y >> z >> listed;
+    EXPECT_EQ(owner, face.owner + 1);
+    EXPECT_EQ(neighbour, face.neighbour + 1);
+    EXPECT_EQ(listed, area);  // shortest round-trip form: exact
+  }
 }
 
 TEST(VolumeFormats, WriteWhatIsAskedAndRemoveWhatAnEarlierRunLeft) {
