@@ -88,6 +88,8 @@ Meshed mesh_sample(const std::string& name, double max_size) {
   PlaneOptions options;
   options.max_size = max_size;
   m.mesh = mesh_plane(m.domain, options);
+  EXPECT_EQ(m.mesh.domain.points, m.prepared.points) << "the mesh keeps the domain it meshed";
+  EXPECT_EQ(m.mesh.domain.segments, m.prepared.segments);
   m.q = measure_plane_quality(m.mesh);
   expect_conforming(m.mesh, m.q);
   return m;

@@ -81,6 +81,9 @@ VOROCRUST_API PlanarDomain read_planar_domain(const std::filesystem::path& path)
 // a domain without segments.
 VOROCRUST_API PlanarDomain prepare_planar_domain(const PlanarDomain& domain);
 
+// A point as messages give it, "(0.1, -2)", to 9 significant digits.
+VOROCRUST_API std::string describe_point(const Point2& p);
+
 struct VOROCRUST_API PlaneOptions {
   double lipschitz = 0.25;                                    // how fast circle radii may vary
   double max_size = std::numeric_limits<double>::infinity();  // bound on circle radii and spacing
@@ -130,6 +133,7 @@ struct VOROCRUST_API PlaneMesh {
   std::vector<Seed> seeds;       // every seed, meshed or not, z = 0
   std::vector<PlaneCircle> circles;
   std::vector<std::string> region_names;  // by label; "outside" at 0
+  PlanarDomain domain;                    // as meshed: prepare_planar_domain's
   PlaneStats stats;
 };
 
@@ -141,11 +145,13 @@ VOROCRUST_API PlaneMesh mesh_plane(const PlanarDomain& domain, const PlaneOption
 // `empty` patch. For the 3D writers: OpenFOAM, TOUGH, PFLOTRAN, Exodus.
 VOROCRUST_API VoronoiMesh extrude_plane_mesh(const PlaneMesh& mesh, double thickness);
 
-// mesh.vtu: VTK polygons at z = 0, cell data material, seed, area, aspect_ratio.
-VOROCRUST_API void write_plane_vtu(const PlaneMesh& mesh, const std::filesystem::path& path);
-// mesh.svg: the cells coloured by material, the seeds, the input segments over them.
-VOROCRUST_API void write_plane_svg(const PlaneMesh& mesh, const PlanarDomain& domain,
-                                   const std::filesystem::path& path);
+// mesh.vtu: VTK polygons at z = 0, cell data material, seed, area, aspect_ratio; the aspect
+// ratios from `quality` when given (measure_plane_quality's of this mesh), else measured here.
+struct PlaneQuality;
+VOROCRUST_API void write_plane_vtu(const PlaneMesh& mesh, const std::filesystem::path& path,
+                                   const PlaneQuality* quality = nullptr);
+// mesh.svg: the cells coloured by material, the seeds, the segments of mesh.domain over them.
+VOROCRUST_API void write_plane_svg(const PlaneMesh& mesh, const std::filesystem::path& path);
 
 // Figures of a 2D mesh, as report.json gives them.
 struct VOROCRUST_API PlaneQuality {

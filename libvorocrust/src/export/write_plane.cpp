@@ -66,8 +66,9 @@ VoronoiMesh extrude_plane_mesh(const PlaneMesh& mesh, double thickness) {
   return out;
 }
 
-void write_plane_vtu(const PlaneMesh& mesh, const std::filesystem::path& path) {
-  const PlaneQuality quality = measure_plane_quality(mesh);
+void write_plane_vtu(const PlaneMesh& mesh, const std::filesystem::path& path, const PlaneQuality* given) {
+  const PlaneQuality quality = given ? PlaneQuality{} : measure_plane_quality(mesh);
+  const PlaneQuality& q = given ? *given : quality;
   std::string t;
   t += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n";
   t += "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" + std::to_string(mesh.points.size()) + "\" NumberOfCells=\"" +
@@ -108,12 +109,13 @@ void write_plane_vtu(const PlaneMesh& mesh, const std::filesystem::path& path) {
   array("Int32", "material", [&](std::size_t i) { return static_cast<long long>(mesh.cells[i].region); });
   array("Int64", "seed", [&](std::size_t i) { return static_cast<long long>(mesh.cells[i].seed); });
   array("Float64", "area", [&](std::size_t i) { return mesh.cells[i].area; });
-  array("Float64", "aspect_ratio", [&](std::size_t i) { return quality.aspect_ratio[i]; });
+  array("Float64", "aspect_ratio", [&](std::size_t i) { return q.aspect_ratio[i]; });
   t += "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
   write_file_atomically(path, t);
 }
 
-void write_plane_svg(const PlaneMesh& mesh, const PlanarDomain& domain, const std::filesystem::path& path) {
+void write_plane_svg(const PlaneMesh& mesh, const std::filesystem::path& path) {
+  const PlanarDomain& domain = mesh.domain;
   Eigen::AlignedBox2d box;
   for (const auto& s : domain.segments) {
     box.extend(domain.points[s[0]]);

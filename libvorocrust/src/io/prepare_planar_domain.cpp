@@ -10,6 +10,12 @@
 
 namespace vorocrust {
 
+std::string describe_point(const Point2& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.9g, %.9g)", p.x(), p.y());
+  return text;
+}
+
 namespace {
 
 std::string where(const PlanarDomain& d, std::size_t segment) {
@@ -18,11 +24,6 @@ std::string where(const PlanarDomain& d, std::size_t segment) {
   return s;
 }
 
-std::string at(const Point2& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.9g, %.9g)", p.x(), p.y());
-  return text;
-}
 
 [[noreturn]] void refuse(const PlanarDomain& d, std::size_t segment, const std::string& message) {
   const std::size_t line = segment < d.segment_lines.size() ? d.segment_lines[segment] : 0;
@@ -115,9 +116,9 @@ PlanarDomain prepare_planar_domain(const PlanarDomain& input) {
   std::map<std::pair<Index, Index>, std::size_t> seen;
   for (std::size_t s = 0; s < d.segments.size(); ++s) {
     const auto [a, b] = d.segments[s];
-    if (a == b) refuse(d, s, where(d, s) + " has zero length: both ends at " + at(d.points[a]));
+    if (a == b) refuse(d, s, where(d, s) + " has zero length: both ends at " + describe_point(d.points[a]));
     const auto [it, fresh] = seen.try_emplace({std::min(a, b), std::max(a, b)}, s);
-    if (!fresh) refuse(d, s, where(d, s) + " repeats " + where(d, it->second) + ", from " + at(d.points[a]) + " to " + at(d.points[b]));
+    if (!fresh) refuse(d, s, where(d, s) + " repeats " + where(d, it->second) + ", from " + describe_point(d.points[a]) + " to " + describe_point(d.points[b]));
   }
   // Crossings and points on segments, decided exactly; each segment remembers where it is split.
   std::vector<std::vector<std::pair<double, Index>>> splits(d.segments.size());
@@ -133,7 +134,7 @@ PlanarDomain prepare_planar_domain(const PlanarDomain& input) {
       const double tc = along(pa, pb, pc), te = along(pa, pb, pe);
       const double lo = std::min(tc, te), hi = std::max(tc, te);
       if (hi > 0 && lo < 1 && !(hi <= 0 || lo >= 1)) {
-        refuse(d, t, where(d, t) + " overlaps " + where(d, s) + " along a stretch from " + at(d.points[lo == tc ? c : e]));
+        refuse(d, t, where(d, t) + " overlaps " + where(d, s) + " along a stretch from " + describe_point(d.points[lo == tc ? c : e]));
       }
       continue;
     }
@@ -176,7 +177,7 @@ PlanarDomain prepare_planar_domain(const PlanarDomain& input) {
   for (std::size_t s = 0; s < d.segments.size(); ++s) {
     const auto [a, b] = d.segments[s];
     if (a == b || !pieces.try_emplace({std::min(a, b), std::max(a, b)}, s).second) {
-      refuse(d, s, where(d, s) + " overlaps another segment near " + at(d.points[a]));
+      refuse(d, s, where(d, s) + " overlaps another segment near " + describe_point(d.points[a]));
     }
   }
   return d;

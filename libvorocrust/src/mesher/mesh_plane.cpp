@@ -19,12 +19,6 @@ namespace vorocrust {
 
 namespace {
 
-std::string at(const Point2& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.9g, %.9g)", p.x(), p.y());
-  return text;
-}
-
 class Clock {
  public:
   explicit Clock(PlaneStats& stats) : stats_(stats) {}
@@ -73,7 +67,7 @@ void relax(std::vector<Seed>& seeds, std::size_t first_interior, const Eigen::Al
 // the frame, or holding a hole point, is not meshed; region points label the others.
 std::vector<std::int32_t> label_regions(const PlanarDomain& d, const std::vector<Seed>& seeds,
                                         const std::vector<std::uint32_t>& twin, const cells::PlaneAssembly& assembly,
-                                        const std::vector<PlaneCircle>& circles, const features::PlaneFeatures& features,
+                                        const features::PlaneFeatures& features,
                                         std::vector<std::string>& names) {
   const std::size_t n = seeds.size();
   UnionFind same(n);
@@ -106,7 +100,7 @@ std::vector<std::int32_t> label_regions(const PlanarDomain& d, const std::vector
   for (std::size_t k = 0; k < d.regions.size(); ++k) {
     const RegionPoint& p = d.regions[k];
     const std::uint32_t r = root_at(p.at);
-    const std::string which = "region point " + std::to_string(k + 1) + " at " + at(p.at);
+    const std::string which = "region point " + std::to_string(k + 1) + " at " + describe_point(p.at);
     if (root_label[r] == kOutsideRegion) {
       throw Error(Error::Kind::InvalidGeometry, which + " lies in no closed region: outside the domain, or its region's boundary is open",
                   {.file = d.file, .line = p.line});
@@ -154,7 +148,7 @@ std::vector<std::int32_t> label_regions(const PlanarDomain& d, const std::vector
       for (std::size_t s = 0; s < d.segments.size(); ++s) {
         if ((d.segments[s][0] == v || d.segments[s][1] == v) && s < d.segment_lines.size()) line = d.segment_lines[s];
       }
-      throw Error(Error::Kind::InvalidGeometry, "a segment ends at " + at(d.points[v]) +
+      throw Error(Error::Kind::InvalidGeometry, "a segment ends at " + describe_point(d.points[v]) +
                                                     " outside every closed region: the boundary has a gap there, or the segment is stray",
                   {.file = d.file, .line = line});
     }
@@ -162,7 +156,6 @@ std::vector<std::int32_t> label_regions(const PlanarDomain& d, const std::vector
   if (std::none_of(label.begin(), label.end(), [](std::int32_t l) { return l > 0; })) {
     throw Error(Error::Kind::InvalidGeometry, "the segments enclose no region to mesh: is the boundary open?", {.file = d.file});
   }
-  (void)circles;
   return label;
 }
 
@@ -214,7 +207,7 @@ PlaneMesh mesh_plane(const PlanarDomain& input, const PlaneOptions& options) {
     return cells::weld_plane_cells(polygons, positions, protection.circles, boundary.on_circles, 1e-10 * frame.diagonal().norm());
   });
   const std::vector<std::int32_t> label = clock("regions", [&] {
-    return label_regions(d, seeds, boundary.twin, assembly, protection.circles, features, mesh.region_names);
+    return label_regions(d, seeds, boundary.twin, assembly, features, mesh.region_names);
   });
 
   // The meshed cells, their points renumbered in first use.
@@ -248,6 +241,7 @@ PlaneMesh mesh_plane(const PlanarDomain& input, const PlaneOptions& options) {
   }
   mesh.seeds = std::move(seeds);
   mesh.circles = protection.circles;
+  mesh.domain = d;
   PlaneStats& stats = mesh.stats;
   stats.corners = static_cast<std::size_t>(std::count(features.corner.begin(), features.corner.end(), true));
   stats.chains = features.chains.size();

@@ -125,7 +125,6 @@ PlaneJobResult run_plane_job(const PlaneJob& job) {
       result.mesh.stats.seconds.emplace_back(phase, std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count());
     };
     timed("quality", [&] { result.quality = measure_plane_quality(result.mesh); });
-    const PlanarDomain prepared = prepare_planar_domain(domain);
     const auto begin_writing = std::chrono::steady_clock::now();
     if (!job.output_dir.empty()) {
       std::optional<VoronoiMesh> slab;
@@ -137,8 +136,8 @@ PlaneJobResult run_plane_job(const PlaneJob& job) {
           std::filesystem::remove_all(where, ignored);  // no file of an earlier run passes for this one's
           continue;
         }
-        if (format == "vtu") write_plane_vtu(result.mesh, where);
-        else if (format == "svg") write_plane_svg(result.mesh, prepared, where);
+        if (format == "vtu") write_plane_vtu(result.mesh, where, &result.quality);
+        else if (format == "svg") write_plane_svg(result.mesh, where);
         else if (format == "seeds") write_seeds_csv(result.mesh.seeds, where);
         else {
           if (!slab) slab = extrude_plane_mesh(result.mesh, job.thickness);
@@ -147,7 +146,7 @@ PlaneJobResult run_plane_job(const PlaneJob& job) {
       }
     }
     result.mesh.stats.seconds.emplace_back("writing", std::chrono::duration<double>(std::chrono::steady_clock::now() - begin_writing).count());
-    json report = report_of(job, &result.mesh, &result.quality, &prepared);
+    json report = report_of(job, &result.mesh, &result.quality, &result.mesh.domain);
     report["status"] = "ok";
     write_report(job, report);
   } catch (const Error& e) {

@@ -254,10 +254,10 @@ class Protection {
     const Placed& p = placed_[circle];
     const double r = kShrink * out.circles[circle].radius;
     if (r < floor_) {
-      const Point2& at = out.circles[circle].centre;
-      char text[160];
-      std::snprintf(text, sizeof text, "segments near (%.9g, %.9g) come closer than the circles protecting them can resolve", at.x(), at.y());
-      throw Error(Error::Kind::InvalidGeometry, std::string(text) + " (a radius below 1e-9 of the domain's size): do they nearly touch, or meet at a tiny angle?",
+      throw Error(Error::Kind::InvalidGeometry,
+                  "segments near " + describe_point(out.circles[circle].centre) +
+                      " come closer than the circles protecting them can resolve (a radius below 1e-9 of the domain's "
+                      "size): do they nearly touch, or meet at a tiny angle?",
                   {.file = d_.file});
     }
     if (p.corner) corner_radius_[p.point] = std::min(corner_radius_[p.point], r);
