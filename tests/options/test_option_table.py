@@ -58,6 +58,15 @@ class OptionTable(unittest.TestCase):
                 if o["kind"] != "flag":
                     self.assertIn("range: " + o["range_text"], text)
 
+    def test_mesh2d_takes_the_options_the_table_marks(self):
+        help_text = cli("mesh2d", "--help").stdout
+        marked = [o for o in TABLE if o["mesh2d"]]
+        self.assertEqual(sorted(o["name"] for o in marked), sorted(vorocrust.PLANE_OPTIONS))
+        for o in TABLE:
+            with self.subTest(option=o["name"]):
+                offered = re.search(r"^\s*" + re.escape(o["cli"]) + r"\b", help_text, re.M) is not None
+                self.assertEqual(offered, o["mesh2d"], help_text)
+
     def test_the_readmes_list_of_options_is_what_the_program_prints(self):
         # The README shows `vorocrust options` as a block; it must not fall behind the table.
         readme = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "README.md")

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "vorocrust/error.hpp"
+#include "vorocrust/plane.hpp"
 #include "vorocrust/regions.hpp"
 #include "vorocrust/version.hpp"
 
@@ -292,6 +293,7 @@ std::string options_json(Spelling spelling, int indent) {
   static const char* const kKinds[] = {"flag", "integer", "real", "choice", "choices", "file", "box"};
   const auto number_or_null = [](const std::optional<double>& x) { return x && std::isfinite(*x) ? json(*x) : json(nullptr); };
   json list = json::array();
+  const std::vector<std::string_view> plane = plane_option_names();
   for (const OptionSpec& spec : mesh_option_specs()) {
     json front_ends = json::array();
     for (const auto& [bit, name] : {std::pair{kCli, "cli"}, {kPython, "python"}, {kMeshLab, "meshlab"}, {kFreeCad, "freecad"}}) {
@@ -328,6 +330,7 @@ std::string options_json(Spelling spelling, int indent) {
                     {"smooth_default", number_or_null(spec.smooth_default)},
                     {"unset_number", number_or_null(spec.unset_number)},
                     {"front_ends", front_ends},
+                    {"mesh2d", std::ranges::find(plane, spec.name) != plane.end()},
                     {"python", option_spelling(spec, Spelling::Python)},
                     {"cli", option_spelling(spec, Spelling::Cli)},
                     {"meshlab", option_spelling(spec, Spelling::MeshLab)},
