@@ -122,6 +122,26 @@ TEST(SampleInterior, RadiiAreLipschitzAndSeedsOutsideEachOthersBalls) {
   }
 }
 
+// max_size bounds the cells, so the seeds of the materials; the outside seeds only close the
+// boundary cells and grow at the Lipschitz rate. Filling the box around the input at max_size made
+// 38 outside seeds for every interior one on the unit box at 0.08.
+TEST(SampleInterior, MaxSizeBoundsTheMaterialsNotTheOutside) {
+  MeshOptions options;
+  options.max_size = 0.08;
+  const MeshResult r = generate_mesh(read_mesh(test::model("sandia_OneBox.obj")), options);
+  ASSERT_GT(r.interior.interior_seeds, 500u);
+  EXPECT_LT(r.interior.outside_seeds, 8 * r.interior.interior_seeds);
+  double largest_outside = 0;
+  for (const Seed& s : r.seeds) {
+    if (s.kind == SeedKind::Interior) {
+      ASSERT_LE(s.radius, options.max_size);
+    }
+    if (s.kind == SeedKind::Outside) largest_outside = std::max(largest_outside, s.radius);
+  }
+  EXPECT_GT(largest_outside, 4 * options.max_size);
+  for (const VoronoiCell& cell : r.cells.cells) ASSERT_GT(cell.volume, 0);
+}
+
 // The spokes run side by side in batches that do not depend on the thread count: one thread
 // gives the seeds that all cores gave. options.threads alone holds the run to one thread, with
 // no ThreadLimit (a program linking the library may have none).

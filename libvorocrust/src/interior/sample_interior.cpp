@@ -111,8 +111,12 @@ std::optional<Seed> InteriorSampler::admit(const Point& z, const std::vector<See
       });
   if (inside) return std::nullopt;
   if (protecting_.covers(z, 1 + kBallClearance)) return std::nullopt;
-  radius = std::min(radius, sizing_(z));
   const std::int32_t region = surface_[nearest_seed].region;
+  // The sizing bounds cells; outside seeds have none, and only close the boundary cells: their
+  // radii grow at the Lipschitz rate alone (under a small max_size, the box around the input
+  // filled at that size held 36 outside seeds for every interior one, 273 s of sampling for
+  // 126 571 cells of sandia_OneBox at 0.02).
+  if (region != kOutsideRegion) radius = std::min(radius, sizing_(z));
   return Seed{z, region, radius, region == kOutsideRegion ? SeedKind::Outside : SeedKind::Interior};
 }
 
