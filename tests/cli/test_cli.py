@@ -182,6 +182,11 @@ class Mesh(unittest.TestCase):
             self.assertEqual(kinds.count("outside"), report["interior"]["outside_seeds"])
             self.assertEqual(sum(1 for row in rows if row["label"] != "0"), report["cells"]["cells"])
             self.assertEqual(report["cells"]["boundary_faces"], report["surface"]["triangles"])
+            # The memory guard's estimate, made before the cells, against the peak the kernel saw.
+            memory = report["memory"]
+            self.assertGreater(memory["resident_bytes_before_cells"], 0)
+            self.assertGreater(memory["estimated_peak_bytes"], memory["resident_bytes_before_cells"])
+            self.assertLess(abs(memory["estimated_peak_bytes"] / memory["peak_resident_bytes"] - 1), 0.25)
             # A run that stops at the surface leaves no volume mesh of the run before.
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--stop-after", "surface", "-q")
             self.assertEqual(r.returncode, 0, r.stderr)
@@ -264,6 +269,20 @@ class Mesh(unittest.TestCase):
             self.assertEqual(r.returncode, 4, r.stderr)
             self.assertIn("refinement cannot converge", r.stderr)
             self.assertRegex(r.stderr, r"crowding most on face \d+ \(cube_pierced.off line \d+\) \(\d+ pieces\) near \(")
+
+    def test_a_run_above_the_memory_bound_is_refused_before_its_cells(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "run")
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-memory", "0.01", "-q")
+            self.assertEqual(r.returncode, 2, r.stderr)
+            self.assertRegex(r.stderr, r"would need about [0-9.e+-]+ GB at its peak \([0-9.e+-]+ GB now and about 3\.6 KB "
+                                       r"for each of its \d+ cells\), above --max-memory's 0\.01 GB: raise it, or make "
+                                       r"fewer cells \(a larger maximum size or Lipschitz constant\)")
+            with open(os.path.join(out, "report.json")) as f:
+                self.assertNotEqual(json.load(f)["status"], "ok")
+            self.assertEqual([f for f in os.listdir(out) if f.startswith("mesh") or f == "case"], [])
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-memory", "4", "-q", "--format", "seeds")
+            self.assertEqual(r.returncode, 0, r.stderr)
 
     def test_unreadable_input_still_leaves_a_report(self):
         with tempfile.TemporaryDirectory() as out:

@@ -81,6 +81,9 @@ struct VOROCRUST_API MeshOptions {
   Stage stop_after = Stage::Cells;
   std::uint64_t seed = 0;  // random seed; equal seeds give equal meshes
   int threads = 0;         // worker threads, 0 = all hardware threads; results do not depend on it
+  // A run whose estimated peak memory (vorocrust/memory.hpp) exceeds this many gigabytes is
+  // refused once its seeds are placed, before the cells: no bound by default.
+  double max_memory_gb = std::numeric_limits<double>::infinity();
   // What run_job writes into its output folder (generate_mesh ignores it): every format by
   // default.
   std::vector<OutputFormat> formats = all_output_formats();

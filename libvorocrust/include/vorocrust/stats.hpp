@@ -94,6 +94,11 @@ struct VOROCRUST_API InteriorStats {
   std::size_t rounds = 0;          // spoke passes: one, and one more after each pass that shrank a ball
   int cvt_iterations = 0;
   double cvt_last_move = 0;        // the largest move of the last Lloyd iteration over the seed's radius
+  // The memory guard (MeshOptions::max_memory_gb), once the seeds are placed: the bytes resident
+  // then, and the run's estimated peak, those plus kCellBytes for each cell to cut (0 where the
+  // system does not say what is resident).
+  std::size_t resident_bytes_before_cells = 0;
+  std::size_t estimated_peak_bytes = 0;
 };
 
 struct VOROCRUST_API FeatureCounts {

@@ -1,9 +1,13 @@
 // The pipeline: each stage one call, in the paper's order.
 #include <tbb/task_arena.h>
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "cells/conforming_cells.hpp"
+#include "core/c_format.hpp"
+#include "core/memory.hpp"
 #include "core/phases.hpp"
 #include "features/surface_features.hpp"
 #include "interior/interior_seeds.hpp"
@@ -14,6 +18,7 @@
 #include "seeds/locate_regions.hpp"
 #include "seeds/surface_seeds.hpp"
 #include "vorocrust/cell_quality.hpp"
+#include "vorocrust/error.hpp"
 #include "vorocrust/mesher.hpp"
 #include "vorocrust/quality.hpp"
 #include "vorocrust/regions.hpp"
@@ -57,6 +62,30 @@ geometry::Box bounding_box(const SurfaceMesh& mesh) {
   return box;
 }
 
+// The cells are the run's largest stage: a cell's cut polyhedron, its faces in the assembled mesh,
+// its quality figures and its lines in the text of every file written from it take about this
+// many bytes (bench/RESULTS.md, "The memory guard"), on top of what the run holds when the seeds
+// are placed.
+constexpr double kCellBytes = 3600;
+
+void guard_memory(const std::vector<Seed>& seeds, const MeshOptions& options, InteriorStats& stats) {
+  const auto cells = static_cast<double>(
+      std::count_if(seeds.begin(), seeds.end(), [](const Seed& s) { return s.region > kOutsideRegion; }));
+  stats.resident_bytes_before_cells = resident_bytes();
+  stats.estimated_peak_bytes =
+      stats.resident_bytes_before_cells + static_cast<std::size_t>(std::llround(kCellBytes * cells));
+  const double bound = options.max_memory_gb * 1e9;
+  if (static_cast<double>(stats.estimated_peak_bytes) <= bound) return;
+  throw Error(Error::Kind::Usage,
+              c_format("the run would need about %.3g GB at its peak (%.3g GB now and about %.3g KB for each of its "
+                       "%.0f cells), above max_memory's %.3g GB: raise it, or make fewer cells (a larger maximum size or "
+                       "Lipschitz constant)",
+                       static_cast<double>(stats.estimated_peak_bytes) / 1e9,
+                       static_cast<double>(stats.resident_bytes_before_cells) / 1e9, kCellBytes / 1e3, cells,
+                       options.max_memory_gb),
+              {.option = "max_memory"});
+}
+
 void count_seed_kinds(const std::vector<Seed>& seeds, InteriorStats& stats) {
   for (const Seed& s : seeds) {
     stats.outside_seeds += s.kind == SeedKind::Outside;
@@ -97,6 +126,7 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
   // Interior seeds (2.5), then the cells, repaired where they need it.
   std::vector<Seed> caps = seed_interior(result.seeds, refinement.index(), regions, sizing, bounding_box(input),
                                          interior_options(options), phase, result.interior);
+  guard_memory(result.seeds, options, result.interior);
   result.cells = conforming_cells(result.seeds, caps, refinement.index(), regions, cells_options(options), phase, result.interior);
   count_seed_kinds(result.seeds, result.interior);
   result.cells.region_names = result.surface.region_names;

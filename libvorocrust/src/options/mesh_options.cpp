@@ -54,7 +54,7 @@ OptionValue optional_number(const std::optional<T>& x) {
 
 // The table. Help texts say what an option does in the paper's words and name no flag: each front
 // end adds its own spelling, the default and the range (default_text, range_text).
-const std::array<OptionSpec, 18> kSpecs = {{
+const std::array<OptionSpec, 19> kSpecs = {{
     {.name = "lipschitz",
      .kind = OptionKind::Real,
      .label = "Lipschitz constant L",
@@ -307,6 +307,25 @@ const std::array<OptionSpec, 18> kSpecs = {{
      .max = 4096,
      .get = [](const MeshOptions& o) -> OptionValue { return std::int64_t{o.threads}; },
      .set = [](MeshOptions& o, const OptionValue& v) { o.threads = static_cast<int>(std::get<std::int64_t>(v)); }},
+    {.name = "max_memory",
+     .kind = OptionKind::Real,
+     .label = "Memory bound",
+     .help = "Refuse a run, once its seeds are placed and before its cells are cut, when its estimated peak "
+             "memory exceeds this many gigabytes; the message gives the estimate",
+     .unit = "GB",
+     .group = "Run",
+     .default_value = std::monostate{},
+     .min = 0,
+     .max = kInf,
+     .min_open = true,
+     .unset_means = "no bound",
+     .unset_number = 0,
+     .get =
+         [](const MeshOptions& o) -> OptionValue {
+           if (std::isinf(o.max_memory_gb)) return std::monostate{};
+           return o.max_memory_gb;
+         },
+     .set = [](MeshOptions& o, const OptionValue& v) { o.max_memory_gb = v.index() == 0 ? kInf : std::get<double>(v); }},
     {.name = "formats",
      .kind = OptionKind::Choices,
      .label = "Outputs",

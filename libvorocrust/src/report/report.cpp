@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/memory.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/plane.hpp"
 #include "vorocrust/regions.hpp"
@@ -461,6 +462,9 @@ std::string run_report_json(const RunReport& report, int indent) {
                        {"aspect_split_seeds", i.aspect_split_seeds},
                        {"aspect_split_rounds", i.aspect_split_rounds},
                        {"aspect_split_rounds_undone", i.aspect_split_rounds_undone}};
+    doc["memory"] = {{"resident_bytes_before_cells", i.resident_bytes_before_cells},
+                     {"estimated_peak_bytes", i.estimated_peak_bytes},
+                     {"peak_resident_bytes", peak_resident_bytes()}};
     doc["cells"] = cells_object(m.cells, m.cell_quality ? &*m.cell_quality : nullptr);
   }
   if (report.mesh && report.input && report.validation) {

@@ -1,0 +1,26 @@
+#include "core/memory.hpp"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace vorocrust {
+
+std::size_t resident_bytes() noexcept {
+  std::FILE* statm = std::fopen("/proc/self/statm", "r");
+  if (!statm) return 0;
+  unsigned long long size = 0, resident = 0;
+  const int read = std::fscanf(statm, "%llu %llu", &size, &resident);
+  std::fclose(statm);
+  const long page = sysconf(_SC_PAGESIZE);
+  return read == 2 && page > 0 ? static_cast<std::size_t>(resident) * static_cast<std::size_t>(page) : 0;
+}
+
+std::size_t peak_resident_bytes() noexcept {
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) != 0 || usage.ru_maxrss < 0) return 0;
+  return static_cast<std::size_t>(usage.ru_maxrss) * 1024;  // Linux gives kilobytes
+}
+
+}  // namespace vorocrust
