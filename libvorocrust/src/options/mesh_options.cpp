@@ -52,6 +52,17 @@ OptionValue optional_number(const std::optional<T>& x) {
   }
 }
 
+// A bound that is infinite until given: unset in the table.
+template <double MeshOptions::*bound>
+OptionValue get_bound(const MeshOptions& o) {
+  if (std::isinf(o.*bound)) return std::monostate{};
+  return o.*bound;
+}
+template <double MeshOptions::*bound>
+void set_bound(MeshOptions& o, const OptionValue& v) {
+  o.*bound = v.index() == 0 ? kInf : std::get<double>(v);
+}
+
 // The table. Help texts say what an option does in the paper's words and name no flag: each front
 // end adds its own spelling, the default and the range (default_text, range_text).
 const std::array<OptionSpec, 19> kSpecs = {{
@@ -115,12 +126,8 @@ const std::array<OptionSpec, 19> kSpecs = {{
      .min_open = true,
      .unset_means = "no bound",
      .unset_number = 0,
-     .get =
-         [](const MeshOptions& o) -> OptionValue {
-           if (std::isinf(o.max_size)) return std::monostate{};
-           return o.max_size;
-         },
-     .set = [](MeshOptions& o, const OptionValue& v) { o.max_size = v.index() == 0 ? kInf : std::get<double>(v); }},
+     .get = get_bound<&MeshOptions::max_size>,
+     .set = set_bound<&MeshOptions::max_size>},
     {.name = "sizing",
      .kind = OptionKind::File,
      .label = "Sizing file",
@@ -320,12 +327,8 @@ const std::array<OptionSpec, 19> kSpecs = {{
      .min_open = true,
      .unset_means = "no bound",
      .unset_number = 0,
-     .get =
-         [](const MeshOptions& o) -> OptionValue {
-           if (std::isinf(o.max_memory_gb)) return std::monostate{};
-           return o.max_memory_gb;
-         },
-     .set = [](MeshOptions& o, const OptionValue& v) { o.max_memory_gb = v.index() == 0 ? kInf : std::get<double>(v); }},
+     .get = get_bound<&MeshOptions::max_memory_gb>,
+     .set = set_bound<&MeshOptions::max_memory_gb>},
     {.name = "formats",
      .kind = OptionKind::Choices,
      .label = "Outputs",
