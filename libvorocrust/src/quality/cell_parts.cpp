@@ -2,6 +2,8 @@
 // Mitchell's reason to weld): each cell's parts against its own size, by layer.
 #include "quality/cell_parts.hpp"
 
+#include "quality/histogram_count.hpp"
+
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -46,13 +48,7 @@ void add(PartDistribution& d, double value, std::size_t cell) {
   if (d.count == 0 || value > d.max) d.max = value;
   d.mean += value;
   ++d.count;
-  if (value > d.high) {
-    ++d.above_high;
-  } else {
-    const double width = (d.high - d.low) / static_cast<double>(d.histogram.size());
-    const double bin = std::floor((value - d.low) / width);
-    ++d.histogram[static_cast<std::size_t>(std::clamp(bin, 0.0, static_cast<double>(d.histogram.size() - 1)))];
-  }
+  count_in_histogram(value, d.low, d.high, d.histogram, d.above_high);
   for (std::size_t k = 0; k < d.thresholds.size(); ++k) d.below[k] += value < d.thresholds[k];
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "quality/cell_parts.hpp"
+#include "quality/histogram_count.hpp"
 #include "quality/face_figures.hpp"
 #include "geometry/cell_spheres.hpp"
 #include "vorocrust/cell_quality.hpp"
@@ -88,7 +89,6 @@ void summarise(const VoronoiMesh& mesh, const CellQualityOptions& options, CellQ
   q.max_aspect_ratio = q.max_volume = -inf;
   q.min_faces = std::numeric_limits<std::size_t>::max();
   double ratio_sum = 0, faces_sum = 0, edge_sum = 0;
-  const double width = (q.histogram_high - q.histogram_low) / static_cast<double>(options.histogram_bins);
   for (std::size_t c = 0; c < n; ++c) {
     const CellShape& s = q.cells[c];
     q.min_aspect_ratio = std::min(q.min_aspect_ratio, s.aspect_ratio);
@@ -97,13 +97,8 @@ void summarise(const VoronoiMesh& mesh, const CellQualityOptions& options, CellQ
       q.worst_cell = c;
     }
     ratio_sum += s.aspect_ratio;
-    if (s.aspect_ratio > q.histogram_high) {
-      ++q.aspect_ratio_above_high;
-    } else {
-      const double bin = std::floor((s.aspect_ratio - q.histogram_low) / width);
-      ++q.aspect_ratio_histogram[static_cast<std::size_t>(
-          std::clamp(bin, 0.0, static_cast<double>(options.histogram_bins - 1)))];
-    }
+    quality::count_in_histogram(s.aspect_ratio, q.histogram_low, q.histogram_high, q.aspect_ratio_histogram,
+                                q.aspect_ratio_above_high);
     q.min_volume = std::min(q.min_volume, s.volume);
     q.max_volume = std::max(q.max_volume, s.volume);
     q.total_volume += s.volume;
