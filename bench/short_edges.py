@@ -3,7 +3,7 @@
 
 Each run is `vorocrust mesh MODEL -o OUT --format seeds --seed 1 [--smooth] OPTIONS`; the figures
 come from its report.json (`cells.quality`): per layer (the boundary layer: cells of seeds on
-protecting spheres and cells with a face on the surface; the interior: the others) the cells, the
+protecting spheres (surface, cap), of repair seeds and cells with a face on the surface; the interior: the others) the cells, the
 shortest edge over its cell's size (the cube root of the cell's volume) and the share of edges
 below 0.01, 0.05 and 0.1 of it, and the share of faces below 1e-4 of the size squared. An edge is
 counted once for every cell it bounds. Prints one Markdown table.

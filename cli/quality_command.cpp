@@ -97,10 +97,10 @@ void print_cell_table(const CellQuality& q, const fs::path& seeds, std::size_t s
   std::printf("faces per cell      min %zu, mean %.2f, max %zu\n", q.min_faces, q.mean_faces, q.max_faces);
   std::printf("shortest edge       min %.4g, mean %.4g of the cube root of the cell volume (cell %zu)\n",
               q.min_shortest_edge_relative, q.mean_shortest_edge_relative, q.shortest_edge_cell);
-  for (const auto& [layer, name] : {std::pair{&q.boundary_layer, "boundary layer"}, std::pair{&q.interior, "interior"}}) {
+  for (const LayerParts* layer : q.layers()) {
     if (layer->cells == 0) continue;
     const PartDistribution &edges = layer->edge_length, &faces = layer->face_area, &angles = layer->dihedral_angle;
-    std::printf("%-20s%zu cells\n", name, layer->cells);
+    std::printf("%-20s%zu cells\n", layer->name, layer->cells);
     std::printf("  edges / size      min %.4g (cell %zu); %.3g%% below 0.01, %.3g%% below 0.05, %.3g%% below 0.1\n",
                 edges.min, edges.min_cell, edges.percent_below(0), edges.percent_below(1), edges.percent_below(2));
     std::printf("  faces / size^2    min %.4g (cell %zu); %.3g%% below 1e-4, %.3g%% below 1e-3, %.3g%% below 0.01\n",

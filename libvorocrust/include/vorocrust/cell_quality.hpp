@@ -18,10 +18,11 @@
 // two faces meeting there (180 degrees minus the angle between their outward normals; an edge of
 // a face without area has none). A part is counted once for each cell it bounds, against that
 // cell's size, so an edge of three cells counts three times. The figures are split between the
-// boundary layer and the interior. The boundary layer is the cells whose seeds lie on protecting
-// spheres (VoronoiCell::seed_kind surface, cap or repair: placed by the surface stage, not free to
-// move) and any other cell with a face on the surface (to no cell, or to a cell of another
-// material); the interior is the cells of the seeds the interior sampler placed.
+// boundary layer and the interior. The boundary layer is the cells of the seeds the surface stage
+// and the cells' repairs placed (VoronoiCell::seed_kind surface and cap: on protecting spheres;
+// repair: splitting the cells beside them), none free to move, and any other cell with a face on
+// the surface (to no cell, or to a cell of another material); the interior is the cells of the
+// seeds the interior sampler placed.
 // Per face with a cell on each side: the angle between its normal and the link between the two
 // seeds (face_orthogonality.hpp; 0 for Voronoi cells up to rounding) and, as OpenFOAM's checkMesh
 // measures them, the angle to the link between the cells' centroids (its "non-orthogonality")
@@ -39,6 +40,7 @@
 #include "vorocrust/api.hpp"
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -89,6 +91,7 @@ struct VOROCRUST_API PartDistribution {
 };
 
 struct VOROCRUST_API LayerParts {
+  const char* name = "";  // "boundary layer" or "interior"
   std::size_t cells = 0;
   PartDistribution edge_length;     // edge / cbrt(volume); thresholds 0.01, 0.05, 0.1
   PartDistribution face_area;       // area / cbrt(volume)^2; thresholds 1e-4, 1e-3, 0.01
@@ -111,7 +114,9 @@ struct VOROCRUST_API CellQuality {
   double min_shortest_edge_relative = 0, mean_shortest_edge_relative = 0;
   std::size_t shortest_edge_cell = 0;  // the cell of the smallest relative edge (the first of equals)
 
-  LayerParts boundary_layer, interior;  // see the top of this header
+  LayerParts boundary_layer{.name = "boundary layer"}, interior{.name = "interior"};  // see the top of this header
+  // Both, the boundary layer first, for the tables and pictures that list them.
+  std::array<const LayerParts*, 2> layers() const { return {&boundary_layer, &interior}; }
 
   // Face skewness as checkMesh measures it (face_skewness.hpp): the largest, its face, and the
   // faces above checkMesh's threshold of 4, which fail its check.

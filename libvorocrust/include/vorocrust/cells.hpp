@@ -56,7 +56,7 @@ struct VOROCRUST_API VoronoiFace {
 struct VOROCRUST_API VoronoiCell {
   Index seed = 0;
   Point site = Point::Zero();  // the seed's position: the node simulators put the cell's values at
-  SeedKind seed_kind = SeedKind::Interior;  // the seed's: surface, cap and repair seeds lie on protecting spheres
+  SeedKind seed_kind = SeedKind::Interior;  // the seed's (surface and cap seeds lie on protecting spheres)
   std::int32_t region = 0;
   std::vector<Index> faces;  // into VoronoiMesh::faces
   double volume = 0;

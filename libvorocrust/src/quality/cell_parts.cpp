@@ -34,11 +34,17 @@ PartDistribution empty_distribution(double low, double high, std::size_t bins, s
   return d;
 }
 
-LayerParts empty_layer() {
-  LayerParts layer;
+// No parts counted yet; the layer keeps its name.
+void clear(LayerParts& layer) {
+  layer.cells = 0;
   layer.edge_length = empty_distribution(0, 2, 40, {0.01, 0.05, 0.1});
   layer.face_area = empty_distribution(0, 2, 40, {1e-4, 1e-3, 1e-2});
   layer.dihedral_angle = empty_distribution(0, 180, 18, {10, 20});
+}
+
+LayerParts empty_layer() {
+  LayerParts layer;
+  clear(layer);
   return layer;
 }
 
@@ -149,8 +155,8 @@ void measure_cell_parts(const VoronoiMesh& mesh, tbb::task_arena& arena, CellQua
       }
     });
   });
-  q.boundary_layer = empty_layer();
-  q.interior = empty_layer();
+  clear(q.boundary_layer);
+  clear(q.interior);
   for (const BlockSums& s : sums) {
     merge(q.boundary_layer, s.boundary_layer);
     merge(q.interior, s.interior);

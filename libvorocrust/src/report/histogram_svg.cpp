@@ -168,11 +168,10 @@ HistogramPanel cell_quality_panel(const CellQuality& quality) {
 std::vector<HistogramPanel> cell_part_panels(const CellQuality& quality) {
   std::vector<HistogramPanel> panels;
   const auto add = [&](const char* measure, PartDistribution LayerParts::*part) {
-    for (const auto& [layer, name] : {std::pair{&quality.boundary_layer, "boundary layer"},
-                                      std::pair{&quality.interior, "interior"}}) {
+    for (const LayerParts* layer : quality.layers()) {
       const PartDistribution& d = layer->*part;
       if (d.count == 0) continue;
-      panels.push_back({std::string(measure) + ", " + name + " (" + std::to_string(layer->cells) + " cells)", d.low,
+      panels.push_back({std::string(measure) + ", " + layer->name + " (" + std::to_string(layer->cells) + " cells)", d.low,
                         d.high, d.histogram, d.min, d.mean, d.above_high});
     }
   };

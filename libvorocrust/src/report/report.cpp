@@ -185,7 +185,8 @@ json cell_quality_object(const CellQuality& q) {
             {"cell", q.shortest_edge_cell}}},
           {"layers",
            {{"definition",
-             "boundary_layer: cells of seeds on protecting spheres (surface, cap, repair) and cells with a face to no "
+             "boundary_layer: cells of surface and cap seeds (on protecting spheres), of repair seeds (splitting the "
+             "cells beside them) and cells with a face to no "
              "cell or to another material's cell; interior: the others"},
             {"boundary_layer_cells", q.boundary_layer.cells},
             {"interior_cells", q.interior.cells}}},

@@ -283,10 +283,10 @@ void cells_tables(std::ostream& html, const MeshResult& result, const std::vecto
          {"shortest edge over the cube root of the volume", figure(q.min_shortest_edge_relative),
           figure(q.mean_shortest_edge_relative), "&mdash;"}});
   std::vector<Row> parts;
-  for (const auto& [layer, name] : {std::pair{&q.boundary_layer, "boundary layer"}, std::pair{&q.interior, "interior"}}) {
+  for (const LayerParts* layer : q.layers()) {
     if (layer->cells == 0) continue;
     const auto row = [&](const std::string& measure, const PartDistribution& d, std::size_t threshold) {
-      parts.push_back({text(name), count(layer->cells), text(measure), figure(d.min), figure(d.mean),
+      parts.push_back({text(layer->name), count(layer->cells), text(measure), figure(d.min), figure(d.mean),
                        figure(d.max), figure(d.thresholds[threshold]), figure(d.percent_below(threshold))});
     };
     row("edge length / cell size", layer->edge_length, 0);
