@@ -4,8 +4,9 @@
 // read: `faces` and `faceoffsets` arrays beside connectivity, offsets and types, each cell's
 // faces oriented outward. Cell data: `material` (the region), `seed` (its seed's index),
 // `volume` and `aspect_ratio` (cell_quality.hpp), so that ParaView's Threshold finds the worst
-// cells. Arrays are appended raw binary (little-endian, UInt64 headers). Written atomically;
-// throws Error(Output) when the file cannot be written.
+// cells. Arrays are appended raw binary (little-endian, UInt64 headers), produced and written a
+// block of cells at a time: beside the mesh, the writer holds a few bytes per cell and point, not
+// the file. Written atomically; throws Error(Output) when the file cannot be written.
 //
 // `quality`: the mesh's measure_cell_quality, when the caller has it; otherwise it is measured
 // here (a third of the time compute_cells takes).

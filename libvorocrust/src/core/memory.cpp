@@ -1,5 +1,8 @@
 #include "core/memory.hpp"
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -15,6 +18,12 @@ std::size_t resident_bytes() noexcept {
   std::fclose(statm);
   const long page = sysconf(_SC_PAGESIZE);
   return read == 2 && page > 0 ? static_cast<std::size_t>(resident) * static_cast<std::size_t>(page) : 0;
+}
+
+void release_free_memory() noexcept {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
 }
 
 std::size_t peak_resident_bytes() noexcept {

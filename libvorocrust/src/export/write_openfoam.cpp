@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "export/region_words.hpp"
+#include "export/spill_text.hpp"
 #include "io/text_numbers.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
@@ -78,51 +79,54 @@ void append(std::string& out, const char* format, Args... args) {
 void write_lists(const VoronoiMesh& mesh, const Ordering& o, const fs::path& poly) {
   const std::string note = "nPoints:" + std::to_string(mesh.points.size()) + "  nCells:" + std::to_string(mesh.cells.size()) +
                            "  nFaces:" + std::to_string(o.faces.size()) + "  nInternalFaces:" + std::to_string(o.internal);
-  std::string text = header("vectorField", "constant/polyMesh", "points");
-  append(text, "%zu\n(\n", mesh.points.size());
-  // Coordinates by io::append_number: printf's %g would follow a host's decimal-comma locale.
-  for (const Point& p : mesh.points) {
-    text += '(';
-    for (int k = 0; k < 3; ++k) {
-      io::append_number(text, p[k]);
-      text += k < 2 ? ' ' : ')';
-    }
-    text += '\n';
-  }
-  text += ")\n";
-  write_file_atomically(poly / "points", text);
-
-  text = header("faceList", "constant/polyMesh", "faces");
-  append(text, "%zu\n(\n", o.faces.size());
-  for (std::size_t f : o.faces) {
-    const std::vector<Index>& polygon = mesh.faces[f].points;
-    io::append_number(text, static_cast<long long>(polygon.size()));
-    for (std::size_t k = 0; k < polygon.size(); ++k) {
-      text += k ? ' ' : '(';
-      io::append_number(text, static_cast<long long>(polygon[k]));
+  write_file_atomically(poly / "points", [&](std::ostream& out) {
+    std::string text = header("vectorField", "constant/polyMesh", "points");
+    append(text, "%zu\n(\n", mesh.points.size());
+    // Coordinates by io::append_number: printf's %g would follow a host's decimal-comma locale.
+    for (const Point& p : mesh.points) {
+      text += '(';
+      for (int k = 0; k < 3; ++k) {
+        io::append_number(text, p[k]);
+        text += k < 2 ? ' ' : ')';
+      }
+      text += '\n';
+      io::spill(out, text);
     }
     text += ")\n";
-  }
-  text += ")\n";
-  write_file_atomically(poly / "faces", text);
-
-  text = header("labelList", "constant/polyMesh", "owner", note);
-  append(text, "%zu\n(\n", o.faces.size());
-  for (std::size_t f : o.faces) {
-    io::append_number(text, static_cast<long long>(mesh.faces[f].owner));
-    text += '\n';
-  }
-  text += ")\n";
-  write_file_atomically(poly / "owner", text);
-
-  text = header("labelList", "constant/polyMesh", "neighbour", note);
-  append(text, "%zu\n(\n", o.internal);
-  for (std::size_t k = 0; k < o.internal; ++k) {
-    io::append_number(text, static_cast<long long>(mesh.faces[o.faces[k]].neighbour));
-    text += '\n';
-  }
-  text += ")\n";
-  write_file_atomically(poly / "neighbour", text);
+    io::spill(out, text, 0);
+  });
+  write_file_atomically(poly / "faces", [&](std::ostream& out) {
+    std::string text = header("faceList", "constant/polyMesh", "faces");
+    append(text, "%zu\n(\n", o.faces.size());
+    for (std::size_t f : o.faces) {
+      const std::vector<Index>& polygon = mesh.faces[f].points;
+      io::append_number(text, static_cast<long long>(polygon.size()));
+      for (std::size_t k = 0; k < polygon.size(); ++k) {
+        text += k ? ' ' : '(';
+        io::append_number(text, static_cast<long long>(polygon[k]));
+      }
+      text += ")\n";
+      io::spill(out, text);
+    }
+    text += ")\n";
+    io::spill(out, text, 0);
+  });
+  // A label a line: the owner of every face, the neighbour of the first o.internal.
+  const auto write_labels = [&](const char* name, const std::string& note, std::size_t count, auto label) {
+    write_file_atomically(poly / name, [&](std::ostream& out) {
+      std::string text = header("labelList", "constant/polyMesh", name, note);
+      append(text, "%zu\n(\n", count);
+      for (std::size_t k = 0; k < count; ++k) {
+        io::append_number(text, static_cast<long long>(label(mesh.faces[o.faces[k]])));
+        text += '\n';
+        io::spill(out, text);
+      }
+      text += ")\n";
+      io::spill(out, text, 0);
+    });
+  };
+  write_labels("owner", note, o.faces.size(), [](const VoronoiFace& f) { return f.owner; });
+  write_labels("neighbour", note, o.internal, [](const VoronoiFace& f) { return f.neighbour; });
 }
 
 // An OpenFOAM labelList, `name List<label>` with its count and one entry a line.

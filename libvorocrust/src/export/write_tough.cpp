@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "export/spill_text.hpp"
 #include "io/text_numbers.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/error.hpp"
@@ -66,31 +67,35 @@ std::map<std::int32_t, std::string> tough_material_names(const VoronoiMesh& mesh
 void write_tough_mesh(const VoronoiMesh& mesh, const std::filesystem::path& path) {
   if (mesh.cells.size() > kMaxCells) tough_element_name(mesh.cells.size());  // throws
   const std::map<std::int32_t, std::string> material = tough_material_names(mesh);
-  std::string text = "ELEME\n";
-  const std::string blank5(5, ' '), blank10(10, ' ');
-  for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
-    const VoronoiCell& cell = mesh.cells[c];
-    text += tough_element_name(c) + blank5 + blank5 + padded(material.at(cell.region), 5);
-    text += io::fortran_e(cell.volume, 10) + blank10 + blank10;
-    for (int k = 0; k < 3; ++k) text += io::fortran_e(cell.site[k], 10);
-    text += '\n';
-  }
-  text += "\nCONNE\n";
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    const VoronoiFace& face = mesh.faces[f];
-    if (face.neighbour == kNoCell) continue;
-    const Point link = mesh.cells[face.neighbour].site - mesh.cells[face.owner].site;
-    const double length = link.norm();
-    int axis = 0;
-    link.cwiseAbs().maxCoeff(&axis);
-    text += tough_element_name(face.owner) + tough_element_name(face.neighbour) + blank5 + blank5 + blank5;
-    text += "    " + std::to_string(axis + 1);
-    text += io::fortran_e(length / 2, 10) + io::fortran_e(length / 2, 10);
-    text += io::fortran_e(face_geometry(mesh, f).area, 10) + io::fortran_e(-link.z() / length, 10);
-    text += '\n';
-  }
-  text += "\n";
-  write_file_atomically(path, text);
+  write_file_atomically(path, [&](std::ostream& out) {
+    std::string text = "ELEME\n";
+    const std::string blank5(5, ' '), blank10(10, ' ');
+    for (std::size_t c = 0; c < mesh.cells.size(); ++c) {
+      const VoronoiCell& cell = mesh.cells[c];
+      text += tough_element_name(c) + blank5 + blank5 + padded(material.at(cell.region), 5);
+      text += io::fortran_e(cell.volume, 10) + blank10 + blank10;
+      for (int k = 0; k < 3; ++k) text += io::fortran_e(cell.site[k], 10);
+      text += '\n';
+      io::spill(out, text);
+    }
+    text += "\nCONNE\n";
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+      const VoronoiFace& face = mesh.faces[f];
+      if (face.neighbour == kNoCell) continue;
+      const Point link = mesh.cells[face.neighbour].site - mesh.cells[face.owner].site;
+      const double length = link.norm();
+      int axis = 0;
+      link.cwiseAbs().maxCoeff(&axis);
+      text += tough_element_name(face.owner) + tough_element_name(face.neighbour) + blank5 + blank5 + blank5;
+      text += "    " + std::to_string(axis + 1);
+      text += io::fortran_e(length / 2, 10) + io::fortran_e(length / 2, 10);
+      text += io::fortran_e(face_geometry(mesh, f).area, 10) + io::fortran_e(-link.z() / length, 10);
+      text += '\n';
+      io::spill(out, text);
+    }
+    text += "\n";
+    io::spill(out, text, 0);
+  });
 }
 
 }  // namespace vorocrust

@@ -1,5 +1,7 @@
 #include "vorocrust/write_volume_mesh.hpp"
 
+#include "core/memory.hpp"
+
 #include <algorithm>
 
 #include "vorocrust/error.hpp"
@@ -38,6 +40,8 @@ void write_volume_format(const VoronoiMesh& mesh, const std::filesystem::path& f
     case OutputFormat::Exodus: write_exodus(mesh, where); break;
     default: break;
   }
+  // Each writer builds its file's arrays or text beside the mesh; the next starts from the mesh alone.
+  release_free_memory();
 }
 
 std::vector<std::string> volume_format_names() {
