@@ -187,6 +187,13 @@ class Mesh(unittest.TestCase):
             self.assertGreater(memory["resident_bytes_before_cells"], 0)
             self.assertGreater(memory["estimated_peak_bytes"], memory["resident_bytes_before_cells"])
             self.assertLess(abs(memory["estimated_peak_bytes"] / memory["peak_resident_bytes"] - 1), 0.25)
+            # Each phase's peak is the process's by its (last) end: the reading's the lowest, none
+            # above the whole run's, and the cells' stages hold the most.
+            peaks = {t["phase"]: t["peak_resident_bytes"] for t in report["timings"]}
+            self.assertGreater(peaks["reading"], 0)
+            self.assertEqual(min(peaks.values()), peaks["reading"])
+            self.assertLessEqual(max(peaks.values()), memory["peak_resident_bytes"])
+            self.assertGreater(peaks["assembly"], peaks["interior seeds"])
             # A run that stops at the surface leaves no volume mesh of the run before.
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--stop-after", "surface", "-q")
             self.assertEqual(r.returncode, 0, r.stderr)
@@ -275,7 +282,7 @@ class Mesh(unittest.TestCase):
             out = os.path.join(tmp, "run")
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-memory", "0.01", "-q")
             self.assertEqual(r.returncode, 2, r.stderr)
-            self.assertRegex(r.stderr, r"would need about [0-9.e+-]+ GB at its peak \([0-9.e+-]+ GB now and about 3\.6 KB "
+            self.assertRegex(r.stderr, r"would need about [0-9.e+-]+ GB at its peak \([0-9.e+-]+ GB now and about 2\.5 KB "
                                        r"for each of its \d+ cells\), above --max-memory's 0\.01 GB: raise it, or make "
                                        r"fewer cells \(a larger maximum size or Lipschitz constant\)")
             with open(os.path.join(out, "report.json")) as f:

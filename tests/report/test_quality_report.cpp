@@ -134,22 +134,23 @@ TEST(QualityReport, CellsRunReportStandsAloneOrJoinsAMeshRunsReport) {
   }
 }
 
-TEST(QualityReport, TimingsHoldOneEntryPerPhaseWithItsRuns) {
+TEST(QualityReport, TimingsHoldOneEntryPerPhaseWithItsRunsAndPeak) {
   RunReport report;
   report.status = "invalid geometry";
-  report.timings = {{"reading", 0.5},
-                    {"refinement: creases", 1},
-                    {"refinement: patches", 2},
-                    {"refinement: creases, pass 2", 0.25},
-                    {"refinement: patches, pass 2", 0.5},
-                    {"skew repair", 0.125},
-                    {"skew repair", 0.125}};
+  report.timings = {{"reading", 0.5, 100},
+                    {"refinement: creases", 1, 300},
+                    {"refinement: patches", 2, 400},
+                    {"refinement: creases, pass 2", 0.25, 500},
+                    {"refinement: patches, pass 2", 0.5, 600},
+                    {"skew repair", 0.125, 700},
+                    {"skew repair", 0.125, 800}};
   const nlohmann::json doc = nlohmann::json::parse(run_report_json(report));
+  // A phase's peak is the process's at the end of its last run, the highest of its runs.
   const nlohmann::json expected = nlohmann::json::parse(R"([
-    {"phase": "reading", "seconds": 0.5, "runs": 1},
-    {"phase": "refinement: creases", "seconds": 1.25, "runs": 2},
-    {"phase": "refinement: patches", "seconds": 2.5, "runs": 2},
-    {"phase": "skew repair", "seconds": 0.25, "runs": 2}])");
+    {"phase": "reading", "seconds": 0.5, "runs": 1, "peak_resident_bytes": 100},
+    {"phase": "refinement: creases", "seconds": 1.25, "runs": 2, "peak_resident_bytes": 500},
+    {"phase": "refinement: patches", "seconds": 2.5, "runs": 2, "peak_resident_bytes": 600},
+    {"phase": "skew repair", "seconds": 0.25, "runs": 2, "peak_resident_bytes": 800}])");
   EXPECT_EQ(doc["timings"], expected);
   EXPECT_EQ(doc["total_seconds"].get<double>(), 4.5);
 }

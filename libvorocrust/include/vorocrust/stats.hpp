@@ -16,6 +16,9 @@ namespace vorocrust {
 struct VOROCRUST_API PhaseTiming {
   std::string name;
   double seconds = 0;
+  // The most bytes the process held resident at once by the phase's end (0 where the system does
+  // not say): the phase that raises it is the one that sets a run's peak.
+  std::size_t peak_resident_bytes = 0;
 };
 
 // What the refinement did (paper Table 1 rows and the counts behind them).

@@ -12,6 +12,7 @@
 
 #include "cells/cell_faces.hpp"
 #include "cells/growing_cells.hpp"
+#include "core/memory.hpp"
 #include "geometry/measure_cells.hpp"
 #include "geometry/polygon_measures.hpp"
 #include "cells/voronoi_cells.hpp"
@@ -159,6 +160,7 @@ struct Assembly {
       cell.site = seeds[cell.seed].position;
       cell.region = seeds[cell.seed].region;
       cell.seed_kind = seeds[cell.seed].kind;
+      cell.faces.reserve(mine.num_faces());
       std::size_t next = first_face[c];
       for (std::size_t f = 0; f < mine.num_faces(); ++f) {
         const Index* polygon = mine.points.data() + mine.starts[f];
@@ -419,21 +421,26 @@ namespace {
 // differently from its neighbour; when none is marked, assembles them into `mesh` (else `mesh`
 // holds the welded points only), cell c as mesh.cells[number[c]].
 // Faces toward seeds that have no cell here are boundary faces, checked by no one.
-std::vector<char> weld_and_assemble(const std::vector<Seed>& seeds, const Frame& frame, const std::vector<RawCell>& raw,
+// With Raw::Release, the cells as cut are freed once none is marked, before the mesh is built:
+// they take as many bytes as the mesh, and a weld that succeeded needs them no more.
+enum class Raw { Keep, Release };
+std::vector<char> weld_and_assemble(const std::vector<Seed>& seeds, const Frame& frame, std::vector<RawCell>& raw,
                                     const std::vector<Index>& cell_seeds, const std::vector<std::int32_t>& cell_of_seed,
                                     const std::vector<std::uint32_t>& number, const std::vector<double>& tolerance,
-                                    VoronoiMesh& mesh, bool& closed) {
-  WeldedVertices welded = weld_vertices(raw, cell_seeds, cell_of_seed, frame, tolerance);
+                                    Raw after, VoronoiMesh& mesh, bool& closed) {
   Assembly assembly{seeds, cell_seeds, cell_of_seed, number, std::vector<CellFaces>(raw.size())};
   std::vector<char> failed(raw.size(), 0);
-  tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
-    std::optional<CellFaces> f = welded_faces(raw[c], welded.first_instance[c], welded.point_of);
-    if (f) assembly.faces[c] = std::move(*f);
-    else failed[c] = 1;
-  });
-  closed = std::count(failed.begin(), failed.end(), 1) == 0;
   mesh = VoronoiMesh{};
-  mesh.points = std::move(welded.points);
+  {
+    WeldedVertices welded = weld_vertices(raw, cell_seeds, cell_of_seed, frame, tolerance);
+    tbb::parallel_for(std::size_t{0}, raw.size(), [&](std::size_t c) {
+      std::optional<CellFaces> f = welded_faces(raw[c], welded.first_instance[c], welded.point_of);
+      if (f) assembly.faces[c] = std::move(*f);
+      else failed[c] = 1;
+    });
+    mesh.points = std::move(welded.points);
+  }
+  closed = std::count(failed.begin(), failed.end(), 1) == 0;
   if (closed) {
     assembly.check(failed);
     // Cells that disagree only by points splitting an edge on one side agree without them.
@@ -442,7 +449,10 @@ std::vector<char> weld_and_assemble(const std::vector<Seed>& seeds, const Frame&
       std::fill(failed.begin(), failed.end(), 0);
       assembly.check(failed);
     }
-    if (!disagree()) assembly.build(mesh);
+    if (!disagree()) {
+      if (after == Raw::Release) std::vector<RawCell>().swap(raw);
+      assembly.build(mesh);
+    }
   }
   return failed;
 }
@@ -542,7 +552,8 @@ VoronoiMesh GrowingCells::assemble(Cell&& cell) const {
       VoronoiMesh scratch;
       bool closed = false;
       const std::vector<char> local_failed =
-          weld_and_assemble(seeds_, frame, local_raw, local_seeds, local_of_seed, local_number, local_tolerance, scratch, closed);
+          weld_and_assemble(seeds_, frame, local_raw, local_seeds, local_of_seed, local_number, local_tolerance, Raw::Keep,
+                            scratch, closed);
       std::vector<char> failed(raw.size(), 0);
       for (std::size_t k = 0; k < local.size(); ++k) failed[local[k]] = local_failed[k];
       return failed;
@@ -574,7 +585,7 @@ VoronoiMesh GrowingCells::assemble(Cell&& cell) const {
     for (int attempt = 0;; ++attempt) {
       bool closed = false;
       const std::vector<char> failed =
-          weld_and_assemble(seeds_, frame, raw, cell_seeds, cell_of_seed, along, tolerance, mesh, closed);
+          weld_and_assemble(seeds_, frame, raw, cell_seeds, cell_of_seed, along, tolerance, Raw::Release, mesh, closed);
       if (std::count(failed.begin(), failed.end(), 1) == 0) break;
       if (attempt == kAttempts - 1) {
         fail_on_lowest(failed, cell_seeds, closed ? "and a neighbour see their common face differently after welding"
@@ -591,7 +602,9 @@ VoronoiMesh GrowingCells::assemble(Cell&& cell) const {
 }  // namespace cells
 
 VoronoiMesh compute_cells(const std::vector<Seed>& seeds, const CellsOptions& options) {
-  return cells::GrowingCells(seeds, options).mesh();
+  VoronoiMesh mesh = cells::GrowingCells(seeds, options).mesh();
+  release_free_memory();  // as conforming_cells does
+  return mesh;
 }
 
 std::size_t count_interior_faces(const VoronoiMesh& mesh) {

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "cells/growing_cells.hpp"
+#include "core/memory.hpp"
 #include "cells/repair_seeds.hpp"
 
 namespace vorocrust {
@@ -64,7 +65,14 @@ class RepairedCells {
   }
 
   VoronoiMesh assemble() {
-    return phases_("assembly", [&] { return std::move(*cells_).mesh(); });
+    return phases_("assembly", [&] {
+      VoronoiMesh mesh = std::move(*cells_).mesh();
+      // The cells as cut, their welding and their faces, freed on every worker's heap, go back to
+      // the system: they are several times the mesh.
+      cells_.reset();
+      release_free_memory();
+      return mesh;
+    });
   }
 
  private:

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/memory.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/progress.hpp"
 #include "vorocrust/stats.hpp"
@@ -27,7 +28,8 @@ class Phases {
     announce(name);
     const auto start = std::chrono::steady_clock::now();
     const auto record = [&] {
-      timings_.push_back({std::string(name), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+      timings_.push_back({std::string(name), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                          peak_resident_bytes()});
     };
     if constexpr (std::is_void_v<decltype(work())>) {
       work();

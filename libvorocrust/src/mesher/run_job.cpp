@@ -6,6 +6,7 @@
 #include <numbers>
 #include <regex>
 
+#include "core/memory.hpp"
 #include "features/scan_likeness.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/balls.hpp"
@@ -51,7 +52,9 @@ class PhaseRecorder {
  private:
   void begin(std::string phase) {
     const auto now = std::chrono::steady_clock::now();
-    if (!phase_.empty()) timings_.push_back({phase_, std::chrono::duration<double>(now - start_).count()});
+    if (!phase_.empty()) {
+      timings_.push_back({phase_, std::chrono::duration<double>(now - start_).count(), peak_resident_bytes()});
+    }
     phase_ = std::move(phase);
     start_ = now;
   }

@@ -246,9 +246,10 @@ json triangle_sides_object(const SurfaceMesh& surface, const std::vector<bool>& 
   return {{"boundary", boundary}, {"interface", interface}, {"sheet", sheet}, {"unmeshed", unmeshed}};
 }
 
-// Timings as a list of {phase, seconds, runs}, one entry per phase in the order phases first ran,
-// and their sum. A phase that runs many times (the refinement's passes, "refinement: patches,
-// pass 12"; the skew repair's rounds) is one entry: a list of every run was hundreds long.
+// Timings as a list of {phase, seconds, runs, peak_resident_bytes}, one entry per phase in the
+// order phases first ran, and their sum. A phase that runs many times (the refinement's passes,
+// "refinement: patches, pass 12"; the skew repair's rounds) is one entry: a list of every run was
+// hundreds long. peak_resident_bytes is the process's peak by the phase's last end.
 std::pair<json, double> timings_object(const std::vector<PhaseTiming>& timings) {
   json list = json::array();
   std::map<std::string, std::size_t, std::less<>> entry_of;
@@ -256,10 +257,11 @@ std::pair<json, double> timings_object(const std::vector<PhaseTiming>& timings) 
   for (const PhaseTiming& t : timings) {
     const std::string phase = t.name.substr(0, t.name.find(", pass "));
     const auto [at, fresh] = entry_of.try_emplace(phase, list.size());
-    if (fresh) list.push_back({{"phase", phase}, {"seconds", 0.0}, {"runs", 0}});
+    if (fresh) list.push_back({{"phase", phase}, {"seconds", 0.0}, {"runs", 0}, {"peak_resident_bytes", 0}});
     json& entry = list[at->second];
     entry["seconds"] = entry["seconds"].get<double>() + t.seconds;
     entry["runs"] = entry["runs"].get<int>() + 1;
+    entry["peak_resident_bytes"] = std::max(entry["peak_resident_bytes"].get<std::size_t>(), t.peak_resident_bytes);
     total += t.seconds;
   }
   return {list, total};

@@ -381,12 +381,18 @@ std::string report_html(const MeshResult& result, const ReportPage& page) {
   html << "<h2>Timings</h2>\n";
   std::vector<Row> timings;
   double total = 0;
+  std::size_t peak = 0;
+  const auto megabytes = [](std::size_t bytes) {
+    return report::locale_free_number(static_cast<double>(bytes) / 1e6, std::chars_format::fixed, 1);
+  };
   for (const PhaseTiming& t : page.timings) {
-    timings.push_back({text(t.name), report::locale_free_number(t.seconds, std::chars_format::fixed, 3)});
+    timings.push_back(
+        {text(t.name), report::locale_free_number(t.seconds, std::chars_format::fixed, 3), megabytes(t.peak_resident_bytes)});
     total += t.seconds;
+    peak = std::max(peak, t.peak_resident_bytes);
   }
-  timings.push_back({"all", report::locale_free_number(total, std::chars_format::fixed, 3)});
-  table(html, "timings", {"phase", "seconds"}, timings);
+  timings.push_back({"all", report::locale_free_number(total, std::chars_format::fixed, 3), megabytes(peak)});
+  table(html, "timings", {"phase", "seconds", "peak resident MB by its end"}, timings);
   html << "</body>\n</html>\n";
   return html.str();
 }
