@@ -113,12 +113,21 @@ def table(build, models, threads):
     return "\n".join(lines)
 
 
-def main():
-    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--build", default=os.path.join(root, "build"))
-    parser.add_argument("--models", default=os.path.join(root, "..", "shared", "models"))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def whole_mesher_arguments(doc):
+    """The arguments of a benchmark that runs the built mesher on the shared models."""
+    parser = argparse.ArgumentParser(description=doc.split("\n\n")[0])
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--models", default=os.path.join(ROOT, "..", "shared", "models"))
     parser.add_argument("--threads", default="2")
+    return parser
+
+
+def main():
+    root = ROOT
+    parser = whole_mesher_arguments(__doc__)
     parser.add_argument("--print", action="store_true")
     args = parser.parse_args()
     text = table(args.build, args.models, args.threads)
