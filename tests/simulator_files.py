@@ -3,14 +3,21 @@ tests to check what the library writes: TOUGH's MESH (fixed-width ELEME and CONN
 PFLOTRAN's explicit unstructured grid (.uge) with its region files."""
 import re
 
-NUMBER = re.compile(r"^ *[-+]?(\d+\.?\d*|\.\d+)([EeDd][-+]?\d+)?$")
+# A Fortran E/F input field: blanks around a number, nothing else.
+NUMBER = r" *[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+)?"
+FOUR_NUMBERS = re.compile("^%s$" % "\\|".join([NUMBER] * 4))
+ELEMENT_NAME = re.compile(r"^[A-Za-z0-9 ]{3}[ 0-9][0-9]$")
+ISOT = re.compile(r"^ *[123]$")
 
 
-def fortran_real(field, what):
-    """A Fortran E/F input field: blanks around a number, nothing else."""
-    if not NUMBER.match(field):
-        raise ValueError("%s: %r is not a real number field" % (what, field))
-    return float(field.replace("D", "E").replace("d", "e"))
+def fortran_reals(line, columns, path, number, names):
+    """The four Fortran E/F fields of a fixed-width record at `columns` (first, last + 1), named
+    for errors."""
+    fields = [line[a:b] for a, b in columns]
+    if not FOUR_NUMBERS.match("|".join(fields)):
+        bad = next(name for field, name in zip(fields, names) if not re.match("^%s$" % NUMBER, field))
+        raise ValueError("%s:%d %s: %r is not a real number field" % (path, number, bad, fields[names.index(bad)]))
+    return [float(field.replace("D", "E").replace("d", "e")) for field in fields]
 
 
 def read_tough_mesh(path):
@@ -24,40 +31,35 @@ def read_tough_mesh(path):
         lines = f.read().split("\n")
     elements, connections, block = [], [], None
     for number, line in enumerate(lines, 1):
-        where = "%s:%d" % (path, number)
         if block is None:
             if line[:5] in ("ELEME", "CONNE"):
                 block = line[:5]
             elif line.strip():
-                raise ValueError("%s: %r outside a block" % (where, line))
+                raise ValueError("%s:%d: %r outside a block" % (path, number, line))
             continue
         if not line.strip():
             block = None
             continue
+        if len(line) > 80:
+            raise ValueError("%s:%d: %s record of %d columns" % (path, number, block, len(line)))
+        line = line.ljust(80)
         if block == "ELEME":
-            if len(line) > 80:
-                raise ValueError("%s: ELEME record of %d columns" % (where, len(line)))
-            line = line.ljust(80)
             name = line[0:5]
-            if not re.match(r"^[A-Za-z0-9 ]{3}[ 0-9][0-9]$", name):
-                raise ValueError("%s: element name %r is not A3 and I2" % (where, name))
+            if not ELEMENT_NAME.match(name):
+                raise ValueError("%s:%d: element name %r is not A3 and I2" % (path, number, name))
             if line[5:15].strip() or line[30:50].strip():
-                raise ValueError("%s: NSEQ, NADD, AHTX or PMX set" % where)
-            elements.append({"name": name, "material": line[15:20],
-                             "volume": fortran_real(line[20:30], where + " VOLX"),
-                             "xyz": [fortran_real(line[50 + 10 * k:60 + 10 * k], where + " X") for k in range(3)]})
+                raise ValueError("%s:%d: NSEQ, NADD, AHTX or PMX set" % (path, number))
+            volume, x, y, z = fortran_reals(line, ((20, 30), (50, 60), (60, 70), (70, 80)), path, number,
+                                            ("VOLX", "X", "Y", "Z"))
+            elements.append({"name": name, "material": line[15:20], "volume": volume, "xyz": [x, y, z]})
         else:
-            if len(line) > 80:
-                raise ValueError("%s: CONNE record of %d columns" % (where, len(line)))
-            line = line.ljust(80)
             isot = line[25:30]
-            if line[10:25].strip() or not re.match(r"^ *[123]$", isot):
-                raise ValueError("%s: NSEQ, NAD1, NAD2 set or ISOT %r not 1, 2 or 3" % (where, isot))
+            if line[10:25].strip() or not ISOT.match(isot):
+                raise ValueError("%s:%d: NSEQ, NAD1, NAD2 set or ISOT %r not 1, 2 or 3" % (path, number, isot))
+            d1, d2, area, betax = fortran_reals(line, ((30, 40), (40, 50), (50, 60), (60, 70)), path, number,
+                                                ("D1", "D2", "AREAX", "BETAX"))
             connections.append({"names": (line[0:5], line[5:10]), "isot": int(isot),
-                                "d1": fortran_real(line[30:40], where + " D1"),
-                                "d2": fortran_real(line[40:50], where + " D2"),
-                                "area": fortran_real(line[50:60], where + " AREAX"),
-                                "betax": fortran_real(line[60:70], where + " BETAX")})
+                                "d1": d1, "d2": d2, "area": area, "betax": betax})
     if block is not None:
         raise ValueError("%s: the %s block does not end with a blank record" % (path, block))
     return elements, connections

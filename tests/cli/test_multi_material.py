@@ -24,7 +24,7 @@ import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from simulator_files import read_ex, read_tough_mesh, read_uge  # noqa: E402
-from volume_mesh import cell_array, check_mesh, polyhedron_faces, read_vtu, vtk_boundary_volume  # noqa: E402
+from volume_mesh import all_polyhedron_faces, cell_array, check_mesh, read_vtu, vtk_boundary_volume  # noqa: E402
 from voxel_regions import VoxelRegions, read_triangles  # noqa: E402
 
 
@@ -119,8 +119,8 @@ class MultiMaterial(unittest.TestCase):
         # Closed interfaces: each region's boundary uses every edge an even number of times.
         sides = collections.defaultdict(list)  # face (sorted point ids) -> materials of its cells
         faces_of = {}
-        for c in range(grid.GetNumberOfCells()):
-            for face in polyhedron_faces(grid, c):
+        for c, faces in enumerate(all_polyhedron_faces(grid)):
+            for face in faces:
                 key = tuple(sorted(face))
                 sides[key].append(material[c])
                 faces_of[key] = face

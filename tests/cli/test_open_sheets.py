@@ -12,7 +12,7 @@ import unittest
 import vtk
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from volume_mesh import (cell_array, check_mesh, polyhedron_faces, read_obj_triangles, read_vtu,  # noqa: E402
+from volume_mesh import (all_polyhedron_faces, cell_array, check_mesh, read_obj_triangles, read_vtu,  # noqa: E402
                          vtk_boundary_volume)
 
 BINARY, MODELS = sys.argv[1:3]
@@ -91,8 +91,8 @@ class TerrainInItsBox(unittest.TestCase):
             return tuple(sorted(tuple(round(c / scale) for c in p) for p in xyz))
 
         cells_of_face = {}
-        for c in range(grid.GetNumberOfCells()):
-            for face in polyhedron_faces(grid, c):
+        for faces in all_polyhedron_faces(grid):
+            for face in faces:
                 if len(face) == 3:
                     k = key(points.GetPoint(i) for i in face)
                     cells_of_face[k] = cells_of_face.get(k, 0) + 1
