@@ -1,11 +1,18 @@
-// Paths to the shared models and the test data, for every test.
+// Paths to the shared models, the test data and the samples, and small helpers, for every test.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <unistd.h>
 
 namespace vorocrust::test {
+
+constexpr double kDegree = std::numbers::pi / 180;
+
+// 1 - alpha: how deep a point must lie in a ball to count as deeply covered (conditions C3, C4).
+constexpr double kDeep = std::numbers::sqrt3 / 2;
 
 inline std::filesystem::path model(const std::string& name) {
   return std::filesystem::path(VOROCRUST_MODELS_DIR) / name;
@@ -13,6 +20,17 @@ inline std::filesystem::path model(const std::string& name) {
 
 inline std::filesystem::path data(const std::string& name) {
   return std::filesystem::path(VOROCRUST_TEST_DATA_DIR) / name;
+}
+
+// A 2D domain of samples/2d.
+inline std::filesystem::path sample_2d(const std::string& name) {
+  return std::filesystem::path(VOROCRUST_SAMPLES_DIR) / "2d" / name;
+}
+
+inline std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
 }
 
 // A fresh, empty folder under the system's temporary folder, removed at destruction.

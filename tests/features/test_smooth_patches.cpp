@@ -23,7 +23,6 @@
 namespace vorocrust {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180;
 
 struct Smoothing {
   SurfaceMesh input;
@@ -36,7 +35,7 @@ Smoothing smooth_model(const std::string& model, const SmoothingOptions& options
   Smoothing run;
   run.input = read_mesh(test::model(model));
   (void)validate(run.input);
-  run.strata = detect_strata(run.input, sharp_degrees * kDegree);
+  run.strata = detect_strata(run.input, sharp_degrees * test::kDegree);
   const auto start = std::chrono::steady_clock::now();
   run.out = smooth_patches(run.input, run.strata, options);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -63,7 +62,7 @@ Bend patch_bend(const SurfaceMesh& mesh, const Strata& s) {
     if (s.sharp_edge[e]) continue;
     const auto faces = s.topology.faces_of(e);
     const double angle =
-        std::acos(std::clamp(face_normal(mesh, faces[0]).dot(face_normal(mesh, faces[1])), -1.0, 1.0)) / kDegree;
+        std::acos(std::clamp(face_normal(mesh, faces[0]).dot(face_normal(mesh, faces[1])), -1.0, 1.0)) / test::kDegree;
     bend.max = std::max(bend.max, angle);
     angles.push_back(angle);
     sum += angle;
@@ -84,7 +83,7 @@ double min_angle_degrees(const SurfaceMesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const Point u = mesh.vertices[t[(k + 1) % 3]] - mesh.vertices[t[k]];
       const Point v = mesh.vertices[t[(k + 2) % 3]] - mesh.vertices[t[k]];
-      least = std::min(least, std::atan2(u.cross(v).norm(), u.dot(v)) / kDegree);
+      least = std::min(least, std::atan2(u.cross(v).norm(), u.dot(v)) / test::kDegree);
     }
   }
   return least;
@@ -284,7 +283,7 @@ SurfaceMesh bumped_grid(int n, double height) {
 Smoothing smooth_mesh(SurfaceMesh mesh, double sharp_degrees, const SmoothingOptions& options = {}) {
   Smoothing run;
   run.input = std::move(mesh);
-  run.strata = detect_strata(run.input, sharp_degrees * kDegree);
+  run.strata = detect_strata(run.input, sharp_degrees * test::kDegree);
   run.out = smooth_patches(run.input, run.strata, options);
   return run;
 }
@@ -375,7 +374,7 @@ TEST(SmoothPatches, BuildStrataReproducesDetection) {
     SCOPED_TRACE(model);
     SurfaceMesh mesh = read_mesh(test::model(model));
     (void)validate(mesh);
-    const Strata detected = detect_strata(mesh, 30 * kDegree);
+    const Strata detected = detect_strata(mesh, 30 * test::kDegree);
     std::vector<bool> corner(mesh.num_vertices(), false);
     for (Index v : detected.corners) corner[v] = true;
     const Strata built = build_strata(mesh, detected.sharp_edge, corner);
@@ -460,7 +459,7 @@ Smoothing smooth_surface_of(const std::string& model, double tolerance) {
   MeshOptions mode;
   mode.smooth = true;
   run.input = prepare_domain(input, mode);
-  run.strata = detect_strata(run.input, mode.sharp_angle() * kDegree, FeatureDetection::BoundaryOnly);
+  run.strata = detect_strata(run.input, mode.sharp_angle() * test::kDegree, FeatureDetection::BoundaryOnly);
   SmoothingOptions options;
   options.max_deviation = tolerance * bounding_box_diagonal(run.input);
   run.out = smooth_patches(run.input, run.strata, options);

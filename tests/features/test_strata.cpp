@@ -14,13 +14,12 @@
 namespace vorocrust {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180;
 
 Strata strata_of(const std::string& model, double degrees = 30,
                  FeatureDetection detection = FeatureDetection::SharpAndBoundary) {
   SurfaceMesh mesh = read_mesh(test::model(model));
   (void)validate(mesh);
-  return detect_strata(mesh, degrees * kDegree, detection);
+  return detect_strata(mesh, degrees * test::kDegree, detection);
 }
 
 // Invariants every detection must satisfy, whatever the model.
@@ -145,7 +144,7 @@ TEST(Strata, TheSidesOfABoxAroundASmoothSurfaceKeepTheirEdges) {
   const SurfaceMesh boxed = enclose_in_box(camel, default_box(camel));
   const std::vector<bool> box = box_faces(boxed);
   ASSERT_EQ(std::count(box.begin(), box.end(), true), 12);
-  const Strata s = detect_strata(boxed, 60 * kDegree, FeatureDetection::BoundaryOnly, box);
+  const Strata s = detect_strata(boxed, 60 * test::kDegree, FeatureDetection::BoundaryOnly, box);
   expect_consistent(s);
   std::size_t box_edges = 0, camel_edges = 0;
   for (std::size_t e = 0; e < s.topology.num_edges(); ++e) {

@@ -13,8 +13,6 @@
 namespace vorocrust {
 namespace {
 
-std::filesystem::path sample(const std::string& name) { return std::filesystem::path(VOROCRUST_SAMPLES_DIR) / "2d" / name; }
-
 double distance_to_segment(const Point2& p, const Point2& a, const Point2& b) {
   const Point2 ab = b - a;
   const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
@@ -83,7 +81,7 @@ struct Meshed {
 };
 Meshed mesh_sample(const std::string& name, double max_size) {
   Meshed m;
-  m.domain = read_planar_domain(sample(name));
+  m.domain = read_planar_domain(test::sample_2d(name));
   m.prepared = prepare_planar_domain(m.domain);
   PlaneOptions options;
   options.max_size = max_size;
@@ -160,7 +158,7 @@ TEST(MeshPlane, ThinChannel) {
 }
 
 TEST(MeshPlane, EveryInteriorModeKeepsTheBoundaryAndTheArea) {
-  const PlanarDomain domain = read_planar_domain(sample("square_hole.poly"));
+  const PlanarDomain domain = read_planar_domain(test::sample_2d("square_hole.poly"));
   std::vector<double> areas;
   for (const InteriorMode mode : {InteriorMode::Random, InteriorMode::Lattice, InteriorMode::Cvt}) {
     PlaneOptions options;
@@ -210,7 +208,7 @@ TEST(MeshPlane, ASizingFileRefinesWhereItAsks) {
     std::ofstream f(dir / "sizing.txt");
     f << "# x y size\n0 0 0.02\n1 1 0.2\n";
   }
-  const PlanarDomain domain = read_planar_domain(sample("square_hole.poly"));
+  const PlanarDomain domain = read_planar_domain(test::sample_2d("square_hole.poly"));
   PlaneOptions uniform, graded;
   uniform.max_size = graded.max_size = 0.2;
   graded.sizing_file = dir / "sizing.txt";
@@ -223,7 +221,7 @@ TEST(MeshPlane, ASizingFileRefinesWhereItAsks) {
 }
 
 TEST(MeshPlane, TheSameSeedGivesTheSameMeshOnAnyNumberOfThreads) {
-  const PlanarDomain domain = read_planar_domain(sample("cross_section.poly"));
+  const PlanarDomain domain = read_planar_domain(test::sample_2d("cross_section.poly"));
   PlaneOptions one, two;
   one.max_size = two.max_size = 0.3;
   one.threads = 1;

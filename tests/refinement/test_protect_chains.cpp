@@ -7,11 +7,10 @@
 
 #include "features/plane_chains.hpp"
 #include "refinement/protect_chains.hpp"
+#include "test_support.hpp"
 
 namespace vorocrust {
 namespace {
-
-std::filesystem::path sample(const std::string& name) { return std::filesystem::path(VOROCRUST_SAMPLES_DIR) / "2d" / name; }
 
 refinement::PlaneProtection protect(const PlanarDomain& d, double max_size, features::PlaneFeatures& f) {
   f = features::find_plane_features(d, 30);
@@ -34,7 +33,7 @@ void expect_meeting_points_uncovered(const refinement::PlaneProtection& p) {
 }
 
 TEST(ProtectChains, TheCrossSectionSettlesAtOnceWithItsMeetingPointsUncovered) {
-  const PlanarDomain d = prepare_planar_domain(read_planar_domain(sample("cross_section.poly")));
+  const PlanarDomain d = prepare_planar_domain(read_planar_domain(test::sample_2d("cross_section.poly")));
   features::PlaneFeatures f;
   const refinement::PlaneProtection p = protect(d, 0.25, f);
   EXPECT_EQ(p.rounds, 1u);
@@ -46,7 +45,7 @@ TEST(ProtectChains, TheCrossSectionSettlesAtOnceWithItsMeetingPointsUncovered) {
 }
 
 TEST(ProtectChains, ATenDegreeWedgeNeedsSmallerCirclesOnlyNearItsTip) {
-  const PlanarDomain d = prepare_planar_domain(read_planar_domain(sample("sharp_corners.poly")));
+  const PlanarDomain d = prepare_planar_domain(read_planar_domain(test::sample_2d("sharp_corners.poly")));
   features::PlaneFeatures f;
   const refinement::PlaneProtection p = protect(d, 0.1, f);
   expect_meeting_points_uncovered(p);
@@ -60,7 +59,7 @@ TEST(ProtectChains, ATenDegreeWedgeNeedsSmallerCirclesOnlyNearItsTip) {
 }
 
 TEST(ProtectChains, CirclesAcrossAThinChannelStayInsideIt) {
-  const PlanarDomain d = read_planar_domain(sample("thin_channel.poly"));
+  const PlanarDomain d = read_planar_domain(test::sample_2d("thin_channel.poly"));
   features::PlaneFeatures f;
   const refinement::PlaneProtection p = protect(d, 0.1, f);
   expect_meeting_points_uncovered(p);

@@ -13,7 +13,6 @@
 namespace vorocrust {
 namespace {
 
-constexpr double kDeep = 0.86602540378443865;  // 1 - alpha
 
 MeshResult balls_of(const std::string& model, double lipschitz = 0.25, std::uint64_t seed = 1) {
   SurfaceMesh mesh = read_mesh(test::model(model));
@@ -32,7 +31,7 @@ void expect_pairwise_conditions(const std::vector<Ball>& balls, double lipschitz
       if (i == j) continue;
       const double d = (balls[i].center - balls[j].center).norm();
       if (balls[i].type == balls[j].type && balls[i].radius > (balls[j].radius + lipschitz * d) * (1 + 1e-12)) ++c3;
-      if (i < j && d < kDeep * std::max(balls[i].radius, balls[j].radius) * (1 - 1e-12)) ++c4;
+      if (i < j && d < test::kDeep * std::max(balls[i].radius, balls[j].radius) * (1 - 1e-12)) ++c4;
     }
   }
   EXPECT_EQ(c3, 0u) << "pairs violating C3 (Lipschitz radii within a stratum type)";

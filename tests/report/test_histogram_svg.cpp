@@ -28,17 +28,11 @@ HistogramPanel quality_panel() {
   return p;
 }
 
-std::size_t occurrences(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 TEST(HistogramSvg, DrawsEveryNonEmptyBinWithItsCountAndMarksMinAndMean) {
   const std::string svg = histogram_svg("surface quality", {quality_panel()});
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);
-  EXPECT_EQ(occurrences(svg, "fill=\"#4a7fb5\""), 4u);  // one bar per non-empty bin
+  EXPECT_EQ(test::occurrences(svg, "fill=\"#4a7fb5\""), 4u);  // one bar per non-empty bin
   for (const char* count : {">2<", ">800<", ">4000<", ">1200<"}) EXPECT_NE(svg.find(count), std::string::npos) << count;
   EXPECT_NE(svg.find(">min 0.17<"), std::string::npos);
   EXPECT_NE(svg.find(">mean 0.86<"), std::string::npos);
@@ -72,8 +66,8 @@ TEST(HistogramSvg, OverflowIsOneMoreBarPastTheRange) {
   p.mean = 7;  // beyond the axis: its line at the axis end, its label saying the value
   p.above_high = 37;
   const std::string svg = histogram_svg("cells", {p});
-  EXPECT_EQ(occurrences(svg, "fill=\"#4a7fb5\""), 4u);
-  EXPECT_EQ(occurrences(svg, "fill=\"#b5834a\""), 1u);  // the overflow bar
+  EXPECT_EQ(test::occurrences(svg, "fill=\"#4a7fb5\""), 4u);
+  EXPECT_EQ(test::occurrences(svg, "fill=\"#b5834a\""), 1u);  // the overflow bar
   EXPECT_NE(svg.find(">37<"), std::string::npos);
   EXPECT_NE(svg.find(">&gt; 5<"), std::string::npos);
   EXPECT_NE(svg.find(">6002 in 20 bins, 37 above 5<"), std::string::npos);
@@ -86,7 +80,7 @@ TEST(HistogramSvg, OverflowIsOneMoreBarPastTheRange) {
   // An empty overflow draws no bar but still says there is none above.
   p.above_high = 0;
   const std::string none = histogram_svg("cells", {p});
-  EXPECT_EQ(occurrences(none, "fill=\"#b5834a\""), 0u);
+  EXPECT_EQ(test::occurrences(none, "fill=\"#b5834a\""), 0u);
   EXPECT_NE(none.find(">6002 in 20 bins, 0 above 5<"), std::string::npos);
 }
 
@@ -113,8 +107,8 @@ TEST(HistogramSvg, SurfaceAndCellPanelsTogether) {
   EXPECT_NE(svg.find(">" + std::to_string(binned) + " in 16 bins, " + std::to_string(cells.aspect_ratio_above_high) +
                      " above 2<"),
             std::string::npos);
-  EXPECT_EQ(occurrences(svg, ">min "), 2u);
-  EXPECT_EQ(occurrences(svg, ">mean "), 2u);
+  EXPECT_EQ(test::occurrences(svg, ">min "), 2u);
+  EXPECT_EQ(test::occurrences(svg, ">mean "), 2u);
 }
 
 // The cells' parts: edges, faces and dihedral angles, each for the boundary layer and the

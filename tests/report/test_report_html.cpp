@@ -27,12 +27,6 @@ std::string element(const std::string& html, const std::string& id, const std::s
   return html.substr(start, end == std::string::npos ? std::string::npos : end - start);
 }
 
-std::size_t occurrences(const std::string& text, const std::string& what) {
-  std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 // The PNG of an <img id=...>'s data URI, decoded.
 test::DecodedPng picture(const std::string& html, const std::string& id) {
   const std::string img = element(html, id, "figure");
@@ -107,13 +101,13 @@ TEST_F(ReportHtml, HoldsEveryTableWithTheRunsFigures) {
   }
   const MeshResult& mesh = result_->mesh;
   const std::string regions = element(*html_, "regions", "table");
-  EXPECT_EQ(occurrences(regions, "<tr>"), 1 + mesh.regions.size());
+  EXPECT_EQ(test::occurrences(regions, "<tr>"), 1 + mesh.regions.size());
   for (const RegionSummary& r : mesh.regions) EXPECT_NE(regions.find(report::escape_markup(r.name)), std::string::npos);
 
   // The worst cells, worst first, as the cell quality found them.
   const CellQuality& quality = *mesh.cell_quality;
   const std::string worst = element(*html_, "worst-cells", "table");
-  ASSERT_EQ(occurrences(worst, "<tr>"), 1 + std::min<std::size_t>(20, mesh.cells.cells.size()));
+  ASSERT_EQ(test::occurrences(worst, "<tr>"), 1 + std::min<std::size_t>(20, mesh.cells.cells.size()));
   const std::string first_row = "<tr><td>1</td><td class=\"n\">" + std::to_string(quality.worst_cell) +
                                 "</td><td class=\"n\">" + std::to_string(quality.worst_seed) + "</td>";
   EXPECT_NE(worst.find(first_row), std::string::npos) << worst.substr(0, 400);
@@ -121,7 +115,7 @@ TEST_F(ReportHtml, HoldsEveryTableWithTheRunsFigures) {
             std::string::npos);
   // The short edges by layer: three measures for each layer with cells.
   const std::string parts = element(*html_, "cell-parts", "table");
-  EXPECT_EQ(occurrences(parts, "<tr>"), 1 + 3 * ((quality.boundary_layer.cells > 0) + (quality.interior.cells > 0)));
+  EXPECT_EQ(test::occurrences(parts, "<tr>"), 1 + 3 * ((quality.boundary_layer.cells > 0) + (quality.interior.cells > 0)));
   EXPECT_NE(parts.find(report::locale_free_number(quality.boundary_layer.edge_length.min, std::chars_format::general, 4)),
             std::string::npos);
 }

@@ -6,11 +6,11 @@
 #include "ball_sites.hpp"
 #include "refinement/ball_index.hpp"
 #include "seeds/skinny_triangles.hpp"
+#include "test_support.hpp"
 
 namespace vorocrust {
 namespace {
 
-constexpr double kDeep = 1 - 0.13397459621556135;  // 1 - alpha
 
 SurfaceSite site(const Point& p, StratumType type = StratumType::Patch) { return test::site_at(p, type); }
 
@@ -34,14 +34,14 @@ struct Fan {
 
 TEST(SkinnyTriangles, AGoodTriangleAsksNothing) {
   Fan fan(1.5);
-  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, test::kDeep);
   EXPECT_EQ(s.skinny, 0u);
   EXPECT_TRUE(s.shrinks.radii.empty());
 }
 
 TEST(SkinnyTriangles, TheBallsCoveringTheCircumcentreDeeplyShrinkJustEnoughToUncoverIt) {
   Fan fan(1.9);
-  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, test::kDeep);
   EXPECT_EQ(s.skinny, 1u);
   // The circumcentre is 0.9998 from every corner: only the far ball (radius 2.66) covers it
   // deeply; the close ones (radius 1) hold it, but not within 0.866.
@@ -50,20 +50,20 @@ TEST(SkinnyTriangles, TheBallsCoveringTheCircumcentreDeeplyShrinkJustEnoughToUnc
   EXPECT_EQ(ball, 2u);
   const double d = (fan.balls[2].site.position - fan.circumcentre).norm();
   EXPECT_NEAR(d, (fan.balls[0].site.position - fan.circumcentre).norm(), 1e-12);
-  EXPECT_LT(kDeep * radius, d);         // no longer covers it deeply
-  EXPECT_GT(kDeep * radius, 0.9 * d);   // by a small margin only
+  EXPECT_LT(test::kDeep * radius, d);         // no longer covers it deeply
+  EXPECT_GT(test::kDeep * radius, 0.9 * d);   // by a small margin only
   EXPECT_NEAR(s.shrinks.max_ratio, 1 - radius / fan.balls[2].radius, 1e-12);
 }
 
 TEST(SkinnyTriangles, AngleBoundDecidesWhichTrianglesAreSkinny) {
   Fan fan(1.9);
-  EXPECT_EQ(choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 25, kDeep).skinny, 0u);
-  EXPECT_EQ(choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 0, kDeep).skinny, 0u);
+  EXPECT_EQ(choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 25, test::kDeep).skinny, 0u);
+  EXPECT_EQ(choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 0, test::kDeep).skinny, 0u);
 }
 
 TEST(SkinnyTriangles, TrianglesAtFeaturesAreLeftToTheProtectingBalls) {
   Fan fan(1.9, StratumType::Crease);
-  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, test::kDeep);
   EXPECT_EQ(s.skinny, 0u);
   EXPECT_TRUE(s.shrinks.radii.empty());
 }
@@ -72,7 +72,7 @@ TEST(SkinnyTriangles, ACircumcentreInAProtectingBallAsksNothing) {
   // Patch samples cannot land inside a crease ball, whatever the patch balls' radii.
   Fan fan(1.9);
   fan.balls.add(site(fan.circumcentre + Point(0, 0, 0.05), StratumType::Crease), 0.1);
-  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, test::kDeep);
   EXPECT_EQ(s.skinny, 1u);
   EXPECT_TRUE(s.shrinks.radii.empty());
 }
@@ -83,7 +83,7 @@ TEST(SkinnyTriangles, OnlyBallsOfTheTrianglesPatchesShrink) {
   SurfaceSite other = site(fan.circumcentre + Point(0, 0, 0.2));
   other.stratum = 1;
   fan.balls.add(other, 1.0);
-  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  const SkinnyTriangleShrinks s = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, test::kDeep);
   ASSERT_EQ(s.shrinks.radii.size(), 1u);
   EXPECT_EQ(s.shrinks.radii[0].first, 2u);
 }
@@ -94,10 +94,10 @@ TEST(SkinnyTriangles, OneBallAskedTwiceTakesTheSmallerRadius) {
   // circumcentre lies 0.52 from the far ball, against 1.0 for the first.
   fan.balls.add(site(Point(2.9, -0.2, 0)), 1.0);
   fan.balls.add(site(Point(2.9, 0.2, 0)), 1.0);
-  const auto one = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, kDeep);
+  const auto one = choose_skinny_triangle_shrinks(fan.balls, {triangle(0, 1, 2)}, 30, test::kDeep);
   // The smaller request first: the larger one after it must not replace it.
   const auto both = choose_skinny_triangle_shrinks(fan.balls, {triangle(2, 3, 4), triangle(0, 1, 2), triangle(0, 1, 2)},
-                                                   30, kDeep);
+                                                   30, test::kDeep);
   EXPECT_EQ(both.skinny, 3u);
   double far_one = 0, far_both = 0;
   for (const auto& [b, r] : one.shrinks.radii) if (b == 2) far_one = r;

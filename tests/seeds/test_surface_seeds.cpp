@@ -21,7 +21,7 @@ struct Run {
   MeshResult result;
 };
 
-const Run& joint() {
+const Run& joint_run() {
   static const Run run = [] {
     Run r;
     r.input = read_mesh(test::model("cgal_joint.off"));
@@ -35,7 +35,7 @@ const Run& joint() {
 }
 
 TEST(SurfaceSeeds, NoHalfCoveredSeedPairIsLeft) {
-  const SliverStats& s = joint().result.slivers;
+  const SliverStats& s = joint_run().result.slivers;
   ASSERT_FALSE(s.iterations.empty());
   EXPECT_EQ(s.iterations.back().half_covered, 0u);
   EXPECT_GT(s.iterations.front().half_covered, 0u) << "the model has slivers to begin with";
@@ -43,7 +43,7 @@ TEST(SurfaceSeeds, NoHalfCoveredSeedPairIsLeft) {
 }
 
 TEST(SurfaceSeeds, TheSurfaceHasTheInputsTopology) {
-  const MeshInfo in = mesh_info(joint().input), out = mesh_info(joint().result.surface);
+  const MeshInfo in = mesh_info(joint_run().input), out = mesh_info(joint_run().result.surface);
   EXPECT_EQ(out.components.size(), in.components.size());
   EXPECT_EQ(out.boundary_edges, 0u);
   EXPECT_EQ(out.non_manifold_edges, 0u);
@@ -52,7 +52,7 @@ TEST(SurfaceSeeds, TheSurfaceHasTheInputsTopology) {
 }
 
 TEST(SurfaceSeeds, CornersAreVerticesAndCreasesAreChainsOfEdges) {
-  const MeshResult& r = joint().result;
+  const MeshResult& r = joint_run().result;
   std::map<std::tuple<double, double, double>, const Ball*> ball_at;
   for (const Ball& b : r.balls) ball_at[{b.center.x(), b.center.y(), b.center.z()}] = &b;
   std::vector<const Ball*> ball_of(r.surface.num_vertices());
@@ -93,7 +93,7 @@ TEST(SurfaceSeeds, CornersAreVerticesAndCreasesAreChainsOfEdges) {
 }
 
 TEST(SurfaceSeeds, RegionsAreOnTheRightSides) {
-  const MeshResult& r = joint().result;
+  const MeshResult& r = joint_run().result;
   ASSERT_EQ(r.surface.face_regions.size(), r.surface.num_faces());
   for (const RegionPair& regions : r.surface.face_regions) {
     ASSERT_EQ(regions.back, kInsideRegion);
@@ -105,7 +105,7 @@ TEST(SurfaceSeeds, RegionsAreOnTheRightSides) {
     for (Index f = 0; f < all.size(); ++f) all[f] = f;
     return enclosed_volume(mesh, all);
   };
-  const double in = volume(joint().input), out = volume(r.surface);
+  const double in = volume(joint_run().input), out = volume(r.surface);
   EXPECT_GT(out, 0);
   EXPECT_NEAR(out / in, 1.0, 0.02);
   // Each pair of seeds straddles its facet: one inside, one outside.
@@ -118,11 +118,11 @@ TEST(SurfaceSeeds, RunsAreReproducible) {
   MeshOptions options;
   options.stop_after = Stage::Surface;
   options.threads = 1;
-  const MeshResult again = generate_mesh(joint().input, options);
-  EXPECT_EQ(again.surface.vertices, joint().result.surface.vertices);
-  EXPECT_EQ(again.surface.triangles, joint().result.surface.triangles);
-  ASSERT_EQ(again.seeds.size(), joint().result.seeds.size());
-  for (std::size_t i = 0; i < again.seeds.size(); ++i) ASSERT_EQ(again.seeds[i].position, joint().result.seeds[i].position);
+  const MeshResult again = generate_mesh(joint_run().input, options);
+  EXPECT_EQ(again.surface.vertices, joint_run().result.surface.vertices);
+  EXPECT_EQ(again.surface.triangles, joint_run().result.surface.triangles);
+  ASSERT_EQ(again.seeds.size(), joint_run().result.seeds.size());
+  for (std::size_t i = 0; i < again.seeds.size(); ++i) ASSERT_EQ(again.seeds[i].position, joint_run().result.seeds[i].position);
 }
 
 }  // namespace
