@@ -12,10 +12,10 @@ For each model, `vorocrust mesh MODEL` with every export, then:
   volume the output surface encloses to 1e-9, and differ from the input's by no more than the
   Hausdorff distance between the surfaces allows (that distance times the input's area).
 
-cgal_bones.off, the issue's fifth model (a million cells, four to five minutes and 5 GB on two
-cores), is its own test, LargeModel: the OpenFOAM case alone (mesh.vtu would be 850 MB), through
-checkMesh, the report's figures against checkMesh's and seeds.csv, and the cells' volume against
-the input's.
+cgal_bones.off, the issue's fifth model (a million cells, about nine minutes and 2.8 GB on two
+cores), is its own test, LargeModel (CTest's volume_models_bones, label large, which the README's
+test command leaves out): the OpenFOAM case alone (mesh.vtu would be 850 MB), through checkMesh,
+the report's figures against checkMesh's and seeds.csv, and the cells' volume against the input's.
 
 Run by CTest as: python3 test_volume_models.py VOROCRUST_BINARY MODELS_DIR [TEST_CLASS]
 """
