@@ -277,19 +277,46 @@ class Mesh(unittest.TestCase):
             self.assertIn("refinement cannot converge", r.stderr)
             self.assertRegex(r.stderr, r"crowding most on face \d+ \(cube_pierced.off line \d+\) \(\d+ pieces\) near \(")
 
-    def test_a_run_above_the_memory_bound_is_refused_before_its_cells(self):
+    def test_a_run_above_the_memory_bound_is_refused_while_its_seeds_are_placed(self):
         with tempfile.TemporaryDirectory() as tmp:
             out = os.path.join(tmp, "run")
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-memory", "0.01", "-q")
             self.assertEqual(r.returncode, 2, r.stderr)
-            self.assertRegex(r.stderr, r"would need about [0-9.e+-]+ GB at its peak \([0-9.e+-]+ GB now and about 2\.5 KB "
-                                       r"for each of its \d+ cells\), above --max-memory's 0\.01 GB: raise it, or make "
-                                       r"fewer cells \(a larger maximum size or Lipschitz constant\)")
+            self.assertRegex(r.stderr, r"would need more than [0-9.e+-]+ GB at its peak: the seeds placed so far already "
+                                       r"make \d+ cells \([0-9.e+-]+ GB now and about 2\.5 KB for each\), above "
+                                       r"--max-memory's 0\.01 GB: raise it, or make fewer cells \(a larger maximum size "
+                                       r"or Lipschitz constant\)")
             with open(os.path.join(out, "report.json")) as f:
                 self.assertNotEqual(json.load(f)["status"], "ok")
             self.assertEqual([f for f in os.listdir(out) if f.startswith("mesh") or f == "case"], [])
             r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-memory", "4", "-q", "--format", "seeds")
             self.assertEqual(r.returncode, 0, r.stderr)
+
+    def test_a_run_of_far_too_many_cells_stops_before_its_seeds_fill_the_memory(self):
+        # A maximum size of a hundredth of the part: about a million cells, some 2.5 GB. The sampler
+        # stops once its seeds alone need more than the bound, so the run never holds more.
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "run")
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-size", "0.01", "--max-memory", "0.3", "-q")
+            self.assertEqual(r.returncode, 2, r.stderr)
+            self.assertIn("the seeds placed so far already make", r.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            self.assertNotEqual(report["status"], "ok")
+            phases = [t["phase"] for t in report["timings"]]
+            self.assertEqual(phases[-1], "interior seeds")
+            self.assertLess(max(t["peak_resident_bytes"] for t in report["timings"]), 0.3e9)
+
+    def test_a_run_above_the_memory_bound_is_refused_before_its_cells(self):
+        # A cube's few interior seeds never reach the sampler's first check: the guard after them.
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "run")
+            r = run("mesh", os.path.join(DATA, "invalid", "cube.off"), "-o", out, "--max-memory", "0.01", "-q")
+            self.assertEqual(r.returncode, 2, r.stderr)
+            self.assertRegex(r.stderr, r"would need about [0-9.e+-]+ GB at its peak \([0-9.e+-]+ GB now and about 2\.5 KB "
+                                       r"for each of its \d+ cells\), above --max-memory's 0\.01 GB: raise it, or make "
+                                       r"fewer cells \(a larger maximum size or Lipschitz constant\)")
+            self.assertEqual([f for f in os.listdir(out) if f.startswith("mesh") or f == "case"], [])
 
     def test_unreadable_input_still_leaves_a_report(self):
         with tempfile.TemporaryDirectory() as out:

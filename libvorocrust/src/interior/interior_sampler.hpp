@@ -5,7 +5,9 @@
 
 #include <tbb/enumerable_thread_specific.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <limits>
@@ -174,6 +176,14 @@ class InteriorSampler {
   void add(const Seed& seed) {
     interior_tree_.insert(seed.position, seed.radius, static_cast<std::uint32_t>(seeds_.size()));
     seeds_.push_back(seed);
+    if (seed.region != kOutsideRegion && ++material_seeds_ >= next_material_report_) report_material_seeds();
+  }
+
+  // Hands options_.on_material_seeds the count, and sets the next count to report at a quarter
+  // more: the reports cost nothing next to the seeds.
+  void report_material_seeds() {
+    next_material_report_ = material_seeds_ + std::max<std::size_t>(material_seeds_ / 4, 1024);
+    if (options_.on_material_seeds) options_.on_material_seeds(material_seeds_);
   }
 
   void check_cancel() const {
@@ -191,6 +201,7 @@ class InteriorSampler {
   geometry::BallTree surface_tree_, interior_tree_;
   std::vector<Seed> seeds_;
   std::uint32_t given_ = 0;  // seeds_[0, given_) were given (add_given), not sampled
+  std::size_t material_seeds_ = 0, next_material_report_ = 1024;
   std::vector<std::uint32_t> passed_over_;  // next_batch's
   tbb::enumerable_thread_specific<Scratch> scratch_;
 };

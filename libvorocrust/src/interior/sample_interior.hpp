@@ -28,7 +28,9 @@
 // Seeds whose region is 0 are kept as outside seeds: they bound the boundary cells.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "geometry/box_tree.hpp"
@@ -50,6 +52,10 @@ struct InteriorOptions {
   double lipschitz = 0.25;
   std::uint64_t seed = 0;
   int misses = 100;  // consecutive misses that end dart throwing, and a spoke seed
+  // Called with the number of material seeds placed so far (the cells they will make) each time
+  // it has grown by a quarter; it may throw to stop the sampling (the memory guard: a run of far
+  // too many cells stops here, before its seeds fill the memory).
+  std::function<void(std::size_t)> on_material_seeds;
 };
 
 

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <functional>
 #include <numbers>
 
 #include "cells/conforming_cells.hpp"
@@ -68,9 +70,33 @@ geometry::Box bounding_box(const SurfaceMesh& mesh) {
 // when the seeds are placed. The files are written a block at a time and add less.
 constexpr double kCellBytes = 2500;
 
-void guard_memory(const std::vector<Seed>& seeds, const MeshOptions& options, InteriorStats& stats) {
-  const auto cells = static_cast<double>(
+double material_seeds(const std::vector<Seed>& seeds) {
+  return static_cast<double>(
       std::count_if(seeds.begin(), seeds.end(), [](const Seed& s) { return s.region > kOutsideRegion; }));
+}
+
+// While the interior seeds are placed: refuses the run as soon as the cells of the seeds placed so
+// far, with what the run holds, already need more than the bound. A run of far too many cells
+// (a maximum size mistyped by a factor of ten) stops here, before its seeds fill the memory.
+std::function<void(std::size_t)> memory_guard_while_sampling(const std::vector<Seed>& surface_seeds,
+                                                               const MeshOptions& options) {
+  if (std::isinf(options.max_memory_gb)) return {};
+  return [surface_cells = material_seeds(surface_seeds), &options](std::size_t placed) {
+    const double cells = surface_cells + static_cast<double>(placed);
+    const auto resident = static_cast<double>(resident_bytes());
+    const double peak = resident + kCellBytes * cells;
+    if (peak <= options.max_memory_gb * 1e9) return;
+    throw Error(Error::Kind::Usage,
+                c_format("the run would need more than %.3g GB at its peak: the seeds placed so far already make %.0f "
+                         "cells (%.3g GB now and about %.3g KB for each), above max_memory's %.3g GB: raise it, or make "
+                         "fewer cells (a larger maximum size or Lipschitz constant)",
+                         peak / 1e9, cells, resident / 1e9, kCellBytes / 1e3, options.max_memory_gb),
+                {.option = "max_memory"});
+  };
+}
+
+void guard_memory(const std::vector<Seed>& seeds, const MeshOptions& options, InteriorStats& stats) {
+  const double cells = material_seeds(seeds);
   stats.resident_bytes_before_cells = resident_bytes();
   stats.estimated_peak_bytes =
       stats.resident_bytes_before_cells + static_cast<std::size_t>(std::llround(kCellBytes * cells));
@@ -124,8 +150,10 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
   result.surface_quality = phase("surface quality", [&] { return measure_surface_quality(input, result.surface); });
   if (options.stop_after == Stage::Surface) return result;
   // Interior seeds (2.5), then the cells, repaired where they need it.
+  InteriorSeedOptions interior = interior_options(options);
+  interior.sampling.on_material_seeds = memory_guard_while_sampling(result.seeds, options);
   std::vector<Seed> caps = seed_interior(result.seeds, refinement.index(), regions, sizing, bounding_box(input),
-                                         interior_options(options), phase, result.interior);
+                                         interior, phase, result.interior);
   // What the surface stages and the sampler freed goes back to the system before the largest
   // stage, and before the guard measures what the run holds.
   release_free_memory();

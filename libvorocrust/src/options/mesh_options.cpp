@@ -317,8 +317,9 @@ const std::array<OptionSpec, 19> kSpecs = {{
     {.name = "max_memory",
      .kind = OptionKind::Real,
      .label = "Memory bound",
-     .help = "Refuse a run, once its seeds are placed and before its cells are cut, when its estimated peak "
-             "memory exceeds this many gigabytes; the message gives the estimate",
+     .help = "Refuse a run whose estimated peak memory exceeds this many gigabytes: while its interior seeds are "
+             "placed, as soon as those placed so far need more, and once all are placed, before its cells are cut; "
+             "the message gives the estimate",
      .unit = "GB",
      .group = "Run",
      .default_value = std::monostate{},
