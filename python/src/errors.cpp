@@ -37,9 +37,11 @@ PyObject* class_for(Error::Kind kind) {
 
 void raise(const Error& e) {
   PyObject* cls = class_for(e.kind());
-  py::object exception = py::reinterpret_borrow<py::object>(cls)(py::str(e.what()));
+  // Options named in the message spelled as Python spells them.
+  const auto spelled = [&](const std::string& text) { return spelled_message(text, e.where().option, Spelling::Python); };
+  py::object exception = py::reinterpret_borrow<py::object>(cls)(py::str(spelled(e.what())));
   exception.attr("kind") = to_string(e.kind());
-  exception.attr("_message") = e.message();
+  exception.attr("_message") = spelled(e.message());
   const Error::Location& where = e.where();
   exception.attr("file") = where.file.empty() ? py::none() : py::object(py::str(where.file));
   exception.attr("line") = where.line == 0 ? py::none() : py::object(py::int_(where.line));

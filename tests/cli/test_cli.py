@@ -5,7 +5,9 @@ Run by CTest as: python3 test_cli.py VOROCRUST_BINARY MODELS_DIR TEST_DATA_DIR
 """
 import csv
 import json
+import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -306,6 +308,35 @@ class Mesh(unittest.TestCase):
             phases = [t["phase"] for t in report["timings"]]
             self.assertEqual(phases[-1], "interior seeds")
             self.assertLess(max(t["peak_resident_bytes"] for t in report["timings"]), 0.3e9)
+
+    def test_a_maximum_size_too_small_for_the_memory_is_refused_before_the_surface_stages(self):
+        # A fifth of a millimetre on a part a metre across: 10^10 cells, terabytes on any machine.
+        # No bound given: the machine's memory is the bound, and the run stops after the regions.
+        volume = 0.3594944502  # cgal_joint's, as `vorocrust info` gives it
+        with tempfile.TemporaryDirectory() as tmp:
+            out = os.path.join(tmp, "run")
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-size", "0.0002", "-q")
+            self.assertEqual(r.returncode, 2, r.stderr)
+            found = re.search(r"--max-size 0\.0002 asks for at least ([0-9.e+]+) cells \(the materials' volume 0\.3595, "
+                              r"a ball of radius --max-size at most for each\), which would need at least ([0-9.e+]+) GB "
+                              r"at about 2\.5 KB for each, above this machine's ([0-9.]+) GB: raise --max-size \(above "
+                              r"([0-9.e-]+) for that memory\)\n", r.stderr)
+            self.assertIsNotNone(found, r.stderr)
+            cells, needed, machine, fitting = (float(x) for x in found.groups())
+            self.assertAlmostEqual(cells / (volume / (4 / 3 * math.pi * 0.0002 ** 3)), 1, places=2)
+            self.assertAlmostEqual(needed / (cells * 2500 / 1e9), 1, places=2)
+            # The size offered needs just the machine's memory.
+            self.assertAlmostEqual(volume / (4 / 3 * math.pi * fitting ** 3) * 2500 / 1e9 / machine, 1, places=1)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            self.assertEqual(report["status"], "usage error")
+            self.assertEqual(report["timings"][-1]["phase"], "regions")
+            self.assertEqual([f for f in os.listdir(out) if f != "report.json"], [])
+            # With a bound given, that bound; the message names both options.
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--max-size", "0.003", "--max-memory", "2", "-q")
+            self.assertEqual(r.returncode, 2, r.stderr)
+            self.assertRegex(r.stderr, r"above --max-memory's 2 GB: raise --max-size \(above 0\.00475 for that memory\) "
+                                       r"or --max-memory\n")
 
     def test_a_run_above_the_memory_bound_is_refused_before_its_cells(self):
         # A cube's few interior seeds never reach the sampler's first check: the guard after them.

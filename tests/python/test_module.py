@@ -207,6 +207,15 @@ class Module(unittest.TestCase):
         np.testing.assert_array_equal(result.surface.triangles, self.result.surface.triangles)
         self.assertEqual(result.report()["inputs"], ["arrays"])
 
+    def test_messages_spell_the_options_as_python_does(self):
+        # The memory guard names the maximum size at fault and the bound beside it.
+        with self.assertRaises(vorocrust.UsageError) as caught:
+            vorocrust.mesh(JOINT, output_dir=self.out("too_fine"), max_size=0.003, max_memory=2)
+        message = str(caught.exception)
+        self.assertTrue(message.startswith("max_size 0.003 asks for at least 3.18e+06 cells"), message)
+        self.assertTrue(message.endswith("above max_memory's 2 GB: raise max_size (above 0.00475 for that memory) or "
+                                         "max_memory"), message)
+
     def test_smooth_is_the_programs_smooth_with_the_papers_settings(self):
         # smooth=True leaves the sharp angle and the smoothing to the mode: 60 degrees, 6 rounds.
         bimba = os.path.join(MODELS, "directional_bimba.off")

@@ -172,7 +172,8 @@ VOROCRUST_API std::string option_spelling(const OptionSpec& spec, Spelling spell
 // `text` with every option name in it (a whole word) spelled as `spelling` spells it: for help
 // texts, which name other options.
 VOROCRUST_API std::string spell_options(const std::string& text, Spelling spelling);
-// `message` with the option `option` (an Error's where().option) spelled as `spelling` spells it.
+// `message` with the option `option` (an Error's where().option) spelled as `spelling` spells it,
+// and any other option named in backquotes.
 VOROCRUST_API std::string spelled_message(const std::string& message, const std::string& option, Spelling spelling);
 
 // The value `text` gives the option, as a command line or a dialog's text field gives it: "true",

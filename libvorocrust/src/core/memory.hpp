@@ -14,6 +14,9 @@ std::size_t resident_bytes() noexcept;
 // held 146 MB of live data. Called between stages, where the freed bytes are many.
 void release_free_memory() noexcept;
 
+// The machine's physical memory in bytes (sysconf); 0 where the system does not say.
+std::size_t physical_memory_bytes() noexcept;
+
 // The most bytes resident at once so far (getrusage's ru_maxrss); 0 where the system does not say.
 std::size_t peak_resident_bytes() noexcept;
 

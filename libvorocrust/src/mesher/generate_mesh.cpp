@@ -112,6 +112,36 @@ void guard_memory(const std::vector<Seed>& seeds, const MeshOptions& options, In
               {.option = "max_memory"});
 }
 
+// Before the surface stages: the fewest cells a maximum size allows, against the memory bound
+// (the machine's memory when none is given). Every point of a material lies within about
+// max_size of a seed (the interior sampler is maximal at radii up to it, and the protecting balls
+// are no larger), so a cell holds at most a ball of that radius, and the materials' volume needs
+// at least so many cells (cgal_joint: 4.5 to 15 times fewer than it makes, from max_size 0.01 to
+// 0.04). A maximum size mistyped by a factor of ten asks for a thousand times the cells; such a run
+// refined for minutes and filled the memory before it failed, with a message that did not name
+// max_size.
+void guard_memory_for_max_size(const std::vector<RegionSummary>& regions, const MeshOptions& options) {
+  if (!std::isfinite(options.max_size)) return;
+  double volume = 0;
+  for (std::size_t label = 1; label < regions.size(); ++label) volume += regions[label].volume;
+  const double machine = static_cast<double>(physical_memory_bytes());
+  const bool bounded = std::isfinite(options.max_memory_gb);
+  const double bound = bounded ? options.max_memory_gb * 1e9 : machine;
+  if (!(volume > 0) || !(bound > 0)) return;
+  const double cell_volume = 4 * std::numbers::pi / 3 * std::pow(options.max_size, 3);
+  const double cells = volume / cell_volume;
+  if (kCellBytes * cells <= bound) return;
+  const double fitting = std::cbrt(volume * kCellBytes / (4 * std::numbers::pi / 3 * bound));
+  throw Error(Error::Kind::Usage,
+              c_format("max_size %.3g asks for at least %.3g cells (the materials' volume %.4g, a ball of radius "
+                       "max_size at most for each), which would need at least %.3g GB at about %.3g KB for each, "
+                       "above %s %.3g GB: raise max_size (above %.3g for that memory)%s",
+                       options.max_size, cells, volume, kCellBytes * cells / 1e9, kCellBytes / 1e3,
+                       bounded ? "`max_memory`'s" : "this machine's", bound / 1e9, fitting,
+                       bounded ? " or `max_memory`" : ""),
+              {.option = "max_size"});
+}
+
 void count_seed_kinds(const std::vector<Seed>& seeds, InteriorStats& stats) {
   for (const Seed& s : seeds) {
     stats.outside_seeds += s.kind == SeedKind::Outside;
@@ -129,6 +159,7 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
                                 ? phase("self-intersections", [&] { return prepare_domain(model, options, &result.self_intersections); })
                                 : prepare_domain(model, options);
   result.regions = phase("regions", [&] { return label_regions(input); });
+  guard_memory_for_max_size(result.regions, options);
   // Features (2.2), then the protecting balls (2.3).
   SurfaceFeatures features = find_features(input, feature_options(options), phase, result.features);
   result.smoothed_input = std::move(features.surface);

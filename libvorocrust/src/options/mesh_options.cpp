@@ -317,9 +317,10 @@ const std::array<OptionSpec, 19> kSpecs = {{
     {.name = "max_memory",
      .kind = OptionKind::Real,
      .label = "Memory bound",
-     .help = "Refuse a run whose estimated peak memory exceeds this many gigabytes: while its interior seeds are "
-             "placed, as soon as those placed so far need more, and once all are placed, before its cells are cut; "
-             "the message gives the estimate",
+     .help = "Refuse a run whose estimated peak memory exceeds this many gigabytes: before the surface stages, when "
+             "`max_size` asks for more cells than this holds (unset, the machine's memory); while its interior seeds "
+             "are placed, as soon as those placed so far need more; and once all are placed, before its cells are "
+             "cut; the message gives the estimate",
      .unit = "GB",
      .group = "Run",
      .default_value = std::monostate{},
@@ -474,8 +475,11 @@ std::string spell_options(const std::string& text, Spelling spelling) {
 }
 
 std::string spelled_message(const std::string& message, const std::string& option, Spelling spelling) {
+  // The option at fault by its bare name, any other in backquotes.
   const OptionSpec* spec = find_option(option);
-  return spec == nullptr ? message : replace_word(message, std::string(spec->name), option_spelling(*spec, spelling));
+  return spell_options(
+      spec == nullptr ? message : replace_word(message, std::string(spec->name), option_spelling(*spec, spelling)),
+      spelling);
 }
 
 OptionValue parse_option_value(const OptionSpec& spec, std::string_view text) {
