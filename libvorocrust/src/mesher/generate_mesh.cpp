@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <numbers>
+#include <string>
 
 #include "cells/conforming_cells.hpp"
 #include "core/c_format.hpp"
@@ -75,6 +76,26 @@ double material_seeds(const std::vector<Seed>& seeds) {
       std::count_if(seeds.begin(), seeds.end(), [](const Seed& s) { return s.region > kOutsideRegion; }));
 }
 
+// The run's peak: what it holds now and the cells to cut. Above the bound it stops, with the
+// estimate: `so_far` while the interior seeds are placed (the cells of those placed so far alone
+// are too many), else once all are placed.
+double refuse_above_memory(double cells, const MeshOptions& options, bool so_far) {
+  const auto resident = static_cast<double>(resident_bytes());
+  const double peak = resident + kCellBytes * cells;
+  if (peak <= options.max_memory_gb * 1e9) return resident;
+  const std::string estimate =
+      so_far ? c_format("more than %.3g GB at its peak: the seeds placed so far already make %.0f cells (%.3g GB now "
+                        "and about %.3g KB for each)",
+                        peak / 1e9, cells, resident / 1e9, kCellBytes / 1e3)
+             : c_format("about %.3g GB at its peak (%.3g GB now and about %.3g KB for each of its %.0f cells)",
+                        peak / 1e9, resident / 1e9, kCellBytes / 1e3, cells);
+  throw Error(Error::Kind::Usage,
+              c_format("the run would need %s, above max_memory's %.3g GB: raise it, or make fewer cells (a larger "
+                       "maximum size or Lipschitz constant)",
+                       estimate.c_str(), options.max_memory_gb),
+              {.option = "max_memory"});
+}
+
 // While the interior seeds are placed: refuses the run as soon as the cells of the seeds placed so
 // far, with what the run holds, already need more than the bound. A run of far too many cells
 // (a maximum size mistyped by a factor of ten) stops here, before its seeds fill the memory.
@@ -82,34 +103,16 @@ std::function<void(std::size_t)> memory_guard_while_sampling(const std::vector<S
                                                                const MeshOptions& options) {
   if (std::isinf(options.max_memory_gb)) return {};
   return [surface_cells = material_seeds(surface_seeds), &options](std::size_t placed) {
-    const double cells = surface_cells + static_cast<double>(placed);
-    const auto resident = static_cast<double>(resident_bytes());
-    const double peak = resident + kCellBytes * cells;
-    if (peak <= options.max_memory_gb * 1e9) return;
-    throw Error(Error::Kind::Usage,
-                c_format("the run would need more than %.3g GB at its peak: the seeds placed so far already make %.0f "
-                         "cells (%.3g GB now and about %.3g KB for each), above max_memory's %.3g GB: raise it, or make "
-                         "fewer cells (a larger maximum size or Lipschitz constant)",
-                         peak / 1e9, cells, resident / 1e9, kCellBytes / 1e3, options.max_memory_gb),
-                {.option = "max_memory"});
+    refuse_above_memory(surface_cells + static_cast<double>(placed), options, true);
   };
 }
 
+// Once the seeds are placed, before the cells: the estimate goes into the report.
 void guard_memory(const std::vector<Seed>& seeds, const MeshOptions& options, InteriorStats& stats) {
   const double cells = material_seeds(seeds);
-  stats.resident_bytes_before_cells = resident_bytes();
-  stats.estimated_peak_bytes =
-      stats.resident_bytes_before_cells + static_cast<std::size_t>(std::llround(kCellBytes * cells));
-  const double bound = options.max_memory_gb * 1e9;
-  if (static_cast<double>(stats.estimated_peak_bytes) <= bound) return;
-  throw Error(Error::Kind::Usage,
-              c_format("the run would need about %.3g GB at its peak (%.3g GB now and about %.3g KB for each of its "
-                       "%.0f cells), above max_memory's %.3g GB: raise it, or make fewer cells (a larger maximum size or "
-                       "Lipschitz constant)",
-                       static_cast<double>(stats.estimated_peak_bytes) / 1e9,
-                       static_cast<double>(stats.resident_bytes_before_cells) / 1e9, kCellBytes / 1e3, cells,
-                       options.max_memory_gb),
-              {.option = "max_memory"});
+  const double resident = refuse_above_memory(cells, options, false);
+  stats.resident_bytes_before_cells = static_cast<std::size_t>(resident);
+  stats.estimated_peak_bytes = static_cast<std::size_t>(std::llround(resident + kCellBytes * cells));
 }
 
 // Before the surface stages: the fewest cells a maximum size allows, against the memory bound
