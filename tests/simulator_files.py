@@ -1,20 +1,26 @@
 """Readers of the simulators' mesh files, written from the formats' specifications alone, for the
 tests to check what the library writes: TOUGH's MESH (fixed-width ELEME and CONNE records) and
 PFLOTRAN's explicit unstructured grid (.uge) with its region files."""
+import functools
 import re
 
 # A Fortran E/F input field: blanks around a number, nothing else.
 NUMBER = r" *[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+)?"
-FOUR_NUMBERS = re.compile("^%s$" % "\\|".join([NUMBER] * 4))
 ELEMENT_NAME = re.compile(r"^[A-Za-z0-9 ]{3}[ 0-9][0-9]$")
 ISOT = re.compile(r"^ *[123]$")
 
 
+@functools.lru_cache
+def numbers_pattern(count):
+    """`count` NUMBER fields joined by '|', as one expression: a record's fields matched at once."""
+    return re.compile("^%s$" % "\\|".join([NUMBER] * count))
+
+
 def fortran_reals(line, columns, path, number, names):
-    """The four Fortran E/F fields of a fixed-width record at `columns` (first, last + 1), named
-    for errors."""
+    """The Fortran E/F fields of a fixed-width record at `columns` (first, last + 1), named for
+    errors."""
     fields = [line[a:b] for a, b in columns]
-    if not FOUR_NUMBERS.match("|".join(fields)):
+    if not numbers_pattern(len(fields)).match("|".join(fields)):
         bad = next(name for field, name in zip(fields, names) if not re.match("^%s$" % NUMBER, field))
         raise ValueError("%s:%d %s: %r is not a real number field" % (path, number, bad, fields[names.index(bad)]))
     return [float(field.replace("D", "E").replace("d", "e")) for field in fields]
