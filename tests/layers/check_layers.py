@@ -6,8 +6,9 @@ The stages in order (a folder may include its own files and those of every folde
 core and options (the vocabulary: meshes, errors, the option table), geometry (predicates, trees,
 spheres), io (read, validate, write the inputs, balls and seeds), regions, arrangement (cutting
 self-intersections), info, features (2.2), refinement (2.3), seeds (2.4), interior (2.5), cells,
-quality, export, report, mesher (the pipeline and the job). A public header (vorocrust/*.hpp)
-counts as the stage that implements it; one that declares data types only counts as core.
+clipping (the clipped methods, which cut the cells to the input), quality, export, report, mesher
+(the pipeline and the job). A public header (vorocrust/*.hpp) counts as the stage that implements
+it; one that declares data types only counts as core.
 
 Usage: check_layers.py LIBVOROCRUST_DIR. Prints every include that points the wrong way and
 exits 1 when there is one.
@@ -17,7 +18,7 @@ import re
 import sys
 
 ORDER = ["core", "options", "geometry", "io", "regions", "arrangement", "info", "features", "refinement",
-         "seeds", "interior", "cells", "quality", "export", "report", "mesher"]
+         "seeds", "interior", "cells", "clipping", "quality", "export", "report", "mesher"]
 RANK = {stage: rank for rank, stage in enumerate(ORDER)}
 RANK["options"] = RANK["core"]  # the option table is vocabulary, as the core types are
 

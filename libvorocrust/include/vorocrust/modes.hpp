@@ -35,6 +35,15 @@ enum class InteriorMode { Random, Lattice, Cvt };
 //   that crosses itself).
 enum class SelfIntersections { Resolve, Refuse, Keep };
 
+// How the cells meet the surface:
+// - Vorocrust: the paper's method: seeds in pairs about the surface, every cell a whole Voronoi
+//   cell, convex, the surface made of Voronoi faces that approximate the input;
+// - Clipped: seeds inside the volume only (Ebeida and Mitchell's maximal Poisson-disk seeds, or
+//   Yan et al.'s CVT), each Voronoi cell cut to the input: the boundary is the input exactly,
+//   volumes are exact, and the cells the surface cuts are no longer Voronoi cells (not convex in
+//   general, their boundary faces not orthogonal to anything).
+enum class Method { Vorocrust, Clipped };
+
 template <class Enum>
 struct ChoiceNames;  // the names of an enumeration's values, in declaration order
 
@@ -45,6 +54,10 @@ struct ChoiceNames<Stage> {
 template <>
 struct ChoiceNames<InteriorMode> {
   static constexpr std::array<std::string_view, 3> names = {"random", "lattice", "cvt"};
+};
+template <>
+struct ChoiceNames<Method> {
+  static constexpr std::array<std::string_view, 2> names = {"vorocrust", "clipped"};
 };
 template <>
 struct ChoiceNames<SelfIntersections> {
@@ -75,6 +88,7 @@ constexpr std::string_view choice_name(Enum value) noexcept {
 inline const char* to_string(Stage stage) noexcept { return choice_name(stage).data(); }
 inline const char* to_string(InteriorMode mode) noexcept { return choice_name(mode).data(); }
 inline const char* to_string(SelfIntersections mode) noexcept { return choice_name(mode).data(); }
+inline const char* to_string(Method method) noexcept { return choice_name(method).data(); }
 inline std::optional<Stage> parse_stage(std::string_view name) noexcept { return parse_choice<Stage>(name); }
 inline std::optional<InteriorMode> parse_interior_mode(std::string_view name) noexcept {
   return parse_choice<InteriorMode>(name);

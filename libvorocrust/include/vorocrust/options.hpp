@@ -37,6 +37,7 @@
 namespace vorocrust {
 
 struct VOROCRUST_API MeshOptions {
+  Method method = Method::Vorocrust;  // the paper's cells, or Voronoi cells clipped to the input
   double lipschitz = 0.25;  // L < 1: how fast ball radii may vary (2.1)
   // The input approximates a smooth surface (a scan, a coarse tessellation of a curved shape): it
   // is smoothed as one patch (only boundary and non-manifold edges stay fixed), and its features

@@ -12,6 +12,7 @@
 
 #include "cells/cell_faces.hpp"
 #include "cells/growing_cells.hpp"
+#include "cells/renumber_points.hpp"
 #include "core/memory.hpp"
 #include "geometry/measure_cells.hpp"
 #include "geometry/polygon_measures.hpp"
@@ -188,26 +189,6 @@ struct Assembly {
     });
   }
 };
-
-// Points numbered in the order the faces first use them, so that work over the mesh in cell
-// order finds them close together (welding numbered them along the curve); points that no face
-// kept (every face around them welded away) are dropped.
-void renumber_points(VoronoiMesh& mesh) {
-  constexpr Index kUnused = std::numeric_limits<Index>::max();
-  std::vector<Index> renumber(mesh.points.size(), kUnused);
-  std::vector<Point> points;
-  points.reserve(mesh.points.size());
-  for (VoronoiFace& f : mesh.faces) {
-    for (Index& p : f.points) {
-      if (renumber[p] == kUnused) {
-        renumber[p] = static_cast<Index>(points.size());
-        points.push_back(mesh.points[p]);
-      }
-      p = renumber[p];
-    }
-  }
-  mesh.points = std::move(points);
-}
 
 }  // namespace
 
@@ -593,7 +574,7 @@ VoronoiMesh GrowingCells::assemble(Cell&& cell) const {
       }
       mend(failed, attempt);
     }
-    renumber_points(mesh);
+    cells::renumber_points(mesh);
     geometry::measure_cells(mesh);
   });
   return mesh;

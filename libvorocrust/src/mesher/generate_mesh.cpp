@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cells/conforming_cells.hpp"
+#include "clipping/clipped_cells.hpp"
 #include "core/c_format.hpp"
 #include "core/memory.hpp"
 #include "core/phases.hpp"
@@ -154,15 +155,21 @@ void count_seed_kinds(const std::vector<Seed>& seeds, InteriorStats& stats) {
   }
 }
 
+// The domain: the model in its box, cut along its self-intersections; the regions it bounds,
+// and the fewest cells they need weighed against the memory.
+SurfaceMesh labelled_domain(const SurfaceMesh& model, const MeshOptions& options, Phases& phase, MeshResult& result) {
+  SurfaceMesh input = options.self_intersections == SelfIntersections::Resolve
+                          ? phase("self-intersections", [&] { return prepare_domain(model, options, &result.self_intersections); })
+                          : prepare_domain(model, options);
+  result.regions = phase("regions", [&] { return label_regions(input); });
+  guard_memory_for_max_size(result.regions, options);
+  return input;
+}
+
 MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, const ProgressCallback& progress) {
   MeshResult result;
   Phases phase(result.timings, progress);
-  // The domain: the model in its box, cut along its self-intersections; the regions it bounds.
-  SurfaceMesh input = options.self_intersections == SelfIntersections::Resolve
-                                ? phase("self-intersections", [&] { return prepare_domain(model, options, &result.self_intersections); })
-                                : prepare_domain(model, options);
-  result.regions = phase("regions", [&] { return label_regions(input); });
-  guard_memory_for_max_size(result.regions, options);
+  SurfaceMesh input = labelled_domain(model, options, phase, result);
   // Features (2.2), then the protecting balls (2.3).
   SurfaceFeatures features = find_features(input, feature_options(options), phase, result.features);
   result.smoothed_input = std::move(features.surface);
@@ -199,6 +206,59 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
   return result;
 }
 
+// The one material a clipped mesh is cut to: the clipped methods mesh one region, bounded by
+// closed surfaces; a face with the material on both sides (a sheet inside it) would be lost.
+std::int32_t clipped_material(const SurfaceMesh& input, const std::vector<RegionSummary>& regions) {
+  if (regions.size() != 2) {
+    throw Error(Error::Kind::Usage,
+                c_format("`method` 'clipped' meshes one material, and this input bounds %zu: mesh it with 'vorocrust', "
+                         "or one material at a time",
+                         regions.size() - 1),
+                {.option = "method"});
+  }
+  for (std::size_t f = 0; f < input.num_faces(); ++f) {
+    if (input.face_regions[f].back == input.face_regions[f].front) {
+      throw Error(Error::Kind::InvalidGeometry,
+                  "`method` 'clipped' cuts cells along closed surfaces only, and " + describe_face(input, f) +
+                      " has the same region on both sides (an open sheet): mesh it with 'vorocrust'",
+                  {.face = f, .option = "method"});
+    }
+  }
+  return 1;
+}
+
+double bounding_diagonal(const SurfaceMesh& mesh) {
+  const geometry::Box box = bounding_box(mesh);
+  return (box.hi - box.lo).norm();
+}
+
+// The clipped methods (Ebeida and Mitchell; Yan et al.): seeds inside the material only, their
+// Voronoi cells cut to the input.
+MeshResult run_clipped(const SurfaceMesh& model, const MeshOptions& options, const ProgressCallback& progress) {
+  MeshResult result;
+  Phases phase(result.timings, progress);
+  SurfaceMesh input = labelled_domain(model, options, phase, result);
+  const std::int32_t material = clipped_material(input, result.regions);
+  clipping::ClippedOptions clipped;
+  clipped.radius = std::isfinite(options.max_size) ? options.max_size : bounding_diagonal(input) / 20;
+  clipped.mode = options.interior;
+  clipped.cvt_iterations = options.cvt_iterations;
+  clipped.seed = options.seed;
+  clipped.threads = options.threads;
+  clipped.before_cells = [&](const std::vector<Seed>& seeds) { guard_memory(seeds, options, result.interior); };
+  clipping::ClippedMesh mesh = clipping::clipped_cells(input, material, clipped, phase);
+  result.seeds = std::move(mesh.seeds);
+  result.cells = std::move(mesh.cells);
+  count_seed_kinds(result.seeds, result.interior);
+  result.cells.region_names = RegionLocator(input).region_names();
+  // The boundary is the input's own: the surface figures compare it with itself.
+  result.smoothed_input = input;
+  result.surface = std::move(input);
+  result.surface_quality = phase("surface quality", [&] { return measure_surface_quality(result.smoothed_input, result.surface); });
+  result.cell_quality = phase("cell quality", [&] { return measure_cell_quality(result.cells, {.threads = options.threads}); });
+  return result;
+}
+
 }  // namespace
 
 SurfaceMesh prepare_domain(const SurfaceMesh& model, const MeshOptions& options, SelfIntersectionStats* stats) {
@@ -218,7 +278,9 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   // Every parallel stage runs in this arena: a program that asks for n threads gets at most n,
   // with or without a ThreadLimit of its own.
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
-  return arena.execute([&] { return run_pipeline(model, options, progress); });
+  return arena.execute([&] {
+    return options.method == Method::Clipped ? run_clipped(model, options, progress) : run_pipeline(model, options, progress);
+  });
 }
 
 }  // namespace vorocrust

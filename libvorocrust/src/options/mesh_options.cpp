@@ -65,7 +65,7 @@ void set_bound(MeshOptions& o, const OptionValue& v) {
 
 // The table. Help texts say what an option does in the paper's words and name no flag: each front
 // end adds its own spelling, the default and the range (default_text, range_text).
-const std::array<OptionSpec, 19> kSpecs = {{
+const std::array<OptionSpec, 20> kSpecs = {{
     {.name = "lipschitz",
      .kind = OptionKind::Real,
      .label = "Lipschitz constant L",
@@ -232,6 +232,21 @@ const std::array<OptionSpec, 19> kSpecs = {{
      .get = [](const MeshOptions& o) -> OptionValue { return std::string(to_string(o.self_intersections)); },
      .set =
          [](MeshOptions& o, const OptionValue& v) { o.self_intersections = choice_of<SelfIntersections>(v); }},
+    {.name = "method",
+     .kind = OptionKind::Choice,
+     .label = "Method",
+     .help = "How the cells meet the surface: 'vorocrust' (seeds in pairs about the surface; every cell a whole, "
+             "convex Voronoi cell, the surface approximated by their faces) or 'clipped' (seeds inside only, each "
+             "Voronoi cell cut to the input: the boundary and the volumes exact, the cut cells not convex; "
+             "`interior` 'random' gives Ebeida and Mitchell's maximal Poisson-disk seeds of radius `max_size` "
+             "(unset, a twentieth of the input's diagonal), 'cvt' Yan et al.'s Lloyd iterations on the clipped "
+             "cells, 'lattice' a cubic lattice of that spacing)",
+     .section = "1",
+     .group = "Domain",
+     .default_value = std::string("vorocrust"),
+     .choices = choice_names<Method>(),
+     .get = [](const MeshOptions& o) -> OptionValue { return std::string(to_string(o.method)); },
+     .set = [](MeshOptions& o, const OptionValue& v) { o.method = choice_of<Method>(v); }},
     {.name = "interior",
      .kind = OptionKind::Choice,
      .label = "Interior seeds",

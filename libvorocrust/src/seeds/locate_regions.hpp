@@ -21,6 +21,8 @@ class RegionLocator {
   // kOutsideRegion when the ray meets none. A hit too near an edge or too grazing to decide the
   // side is retried along other directions. Thread-safe.
   std::int32_t region_of(const Point& p, const Point& direction) const;
+  // The same along a fixed direction, for points no direction suits better.
+  std::int32_t region_of(const Point& p) const { return region_of(p, Point(0.48, 0.6, 0.64)); }
 
   // Whether the segment from p to q meets an input face: two seeds of one region on either side
   // of an open sheet do, two seeds on one side of a closed surface do not. Thread-safe.

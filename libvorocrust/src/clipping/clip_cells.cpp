@@ -1,0 +1,647 @@
+#include "clipping/clip_cells.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <compare>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "cells/renumber_points.hpp"
+#include "clipping/polygon_holes.hpp"
+#include "core/c_format.hpp"
+#include "geometry/measure_cells.hpp"
+#include "geometry/point_cloud.hpp"
+#include "seeds/locate_regions.hpp"
+#include "vorocrust/error.hpp"
+
+namespace vorocrust::clipping {
+namespace {
+
+using CellId = std::uint32_t;
+
+// What defines a point of the clipped mesh: equal keys are one point, computed one way.
+enum class KeyKind : std::uint8_t { InputVertex, EdgeCut, TriangleCut };
+struct Key {
+  KeyKind kind = KeyKind::InputVertex;
+  // InputVertex: v. EdgeCut: the edge's vertices u < w, the bisector's cells c < d.
+  // TriangleCut: the triangle, the three cells c < d < e whose Voronoi edge meets it.
+  std::array<std::uint32_t, 4> ids{};
+  auto operator<=>(const Key&) const = default;
+};
+
+// The line a polygon edge lies on in its triangle: an input edge (u < w), or the bisector between
+// the clipped cell and another.
+struct Support {
+  bool bisector = false;
+  std::uint32_t a = 0, b = 0;  // edge: u, w; bisector: the clipped cell, the other
+};
+
+struct Corner {
+  Key key;
+  Point p;
+  Support out;  // of the edge from this corner to the next
+};
+using Polygon = std::vector<Corner>;
+
+// A part of an input triangle in one cell, in the triangle's vertex order.
+struct Piece {
+  std::uint32_t triangle = 0;
+  CellId cell = 0;
+  Polygon corners;
+};
+
+// A point of the surface on a Voronoi edge: where the edge of three cells crosses a triangle.
+struct Crossing {
+  std::array<CellId, 3> cells;
+  Index point;
+  std::uint32_t triangle;
+  auto operator<=>(const Crossing&) const = default;
+};
+
+std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
+  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+}
+
+// The surface's restricted Voronoi diagram: each boundary triangle cut by the cells it meets,
+// found by walking from the cell of its centroid across the bisectors that cut it (Yan et al.
+// 4.1). A point's side of a bisector is computed from the point's key alone, so a part of an
+// input edge is cut the same way in both its triangles.
+class RestrictedCells {
+ public:
+  RestrictedCells(const VoronoiMesh& voronoi, const SurfaceMesh& domain) : domain_(domain), cloud_{&sites_} {
+    sites_.reserve(voronoi.cells.size());
+    for (const VoronoiCell& c : voronoi.cells) sites_.push_back(c.site);
+    neighbours_.resize(voronoi.cells.size());
+    for (const VoronoiFace& f : voronoi.faces) {
+      if (f.neighbour == kNoCell) continue;
+      neighbours_[static_cast<std::size_t>(f.owner)].push_back(static_cast<CellId>(f.neighbour));
+      neighbours_[static_cast<std::size_t>(f.neighbour)].push_back(static_cast<CellId>(f.owner));
+    }
+    // One order of the bisectors for every triangle: a part of an input edge is then cut by
+    // the same planes in the same order in both triangles that share it.
+    for (std::vector<CellId>& n : neighbours_) std::sort(n.begin(), n.end());
+    tree_ = std::make_unique<Tree>(3, cloud_, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  }
+
+  std::vector<Piece> pieces(std::uint32_t t) const {
+    const Triangle& tri = domain_.triangles[t];
+    Polygon triangle(3);
+    for (int k = 0; k < 3; ++k) {
+      const Index u = tri[k], w = tri[(k + 1) % 3];
+      triangle[k] = {Key{KeyKind::InputVertex, {u, 0, 0, 0}}, domain_.vertices[u],
+                     Support{false, std::min(u, w), std::max(u, w)}};
+    }
+    const Point centroid = (triangle[0].p + triangle[1].p + triangle[2].p) / 3;
+    std::vector<CellId> visited{nearest_cell(centroid)};
+    std::vector<Piece> result;
+    for (std::size_t q = 0; q < visited.size(); ++q) {
+      const CellId c = visited[q];
+      Polygon polygon = triangle;
+      for (CellId x : neighbours_[c]) {
+        polygon = clip(polygon, c, x, t);
+        if (polygon.empty()) break;
+      }
+      if (polygon.empty()) continue;
+      for (const Corner& k : polygon) {
+        if (k.out.bisector && std::find(visited.begin(), visited.end(), k.out.b) == visited.end()) {
+          visited.push_back(k.out.b);
+        }
+      }
+      result.push_back({t, c, std::move(polygon)});
+    }
+    return result;
+  }
+
+ private:
+  using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
+  using Tree = StaticKdTree<Cloud>;
+
+  CellId nearest_cell(const Point& p) const {
+    std::uint32_t index = 0;
+    double squared = 0;
+    tree_->knnSearch(p.data(), 1, &index, &squared);
+    return index;
+  }
+
+  // Positive where p is nearer cell hi's seed than cell lo's (lo < hi).
+  double bisector_value(CellId lo, CellId hi, const Point& p) const {
+    const Point& a = sites_[lo];
+    const Point& b = sites_[hi];
+    return (b - a).dot(2 * p - a - b);
+  }
+
+  static bool on_bisector(const Key& key, CellId c, CellId x) {
+    const CellId lo = std::min(c, x), hi = std::max(c, x);
+    if (key.kind == KeyKind::EdgeCut) return key.ids[2] == lo && key.ids[3] == hi;
+    if (key.kind != KeyKind::TriangleCut) return false;
+    const auto has = [&](CellId k) { return key.ids[1] == k || key.ids[2] == k || key.ids[3] == k; };
+    return has(lo) && has(hi);
+  }
+
+  // -1: nearer c's seed; 1: nearer x's; 0: on their bisector, by definition or exactly.
+  int side(const Corner& k, CellId c, CellId x) const {
+    if (on_bisector(k.key, c, x)) return 0;
+    const double v = c < x ? bisector_value(c, x, k.p) : -bisector_value(x, c, k.p);
+    return (v > 0) - (v < 0);
+  }
+
+  Point edge_cut(std::uint32_t u, std::uint32_t w, CellId lo, CellId hi) const {
+    const Point& pu = domain_.vertices[u];
+    const Point& pw = domain_.vertices[w];
+    const double gu = bisector_value(lo, hi, pu), gw = bisector_value(lo, hi, pw);
+    const double lambda = gu == gw ? 0.5 : std::clamp(gu / (gu - gw), 0.0, 1.0);
+    return pu + lambda * (pw - pu);
+  }
+
+  Point triangle_cut(std::uint32_t t, const std::array<CellId, 3>& cells) const {
+    const Triangle& tri = domain_.triangles[t];
+    const Point& o = domain_.vertices[tri[0]];
+    const Point& a = sites_[cells[0]];
+    const Point& b = sites_[cells[1]];
+    const Point& c = sites_[cells[2]];
+    Eigen::Matrix3d m;
+    m.row(0) = (domain_.vertices[tri[1]] - o).cross(domain_.vertices[tri[2]] - o).transpose();
+    m.row(1) = (b - a).transpose();
+    m.row(2) = (c - a).transpose();
+    const Eigen::Vector3d rhs(0, (b - a).dot((a + b) / 2 - o), (c - a).dot((a + c) / 2 - o));
+    return o + m.fullPivLu().solve(rhs);
+  }
+
+  // Where the edge leaving `a` meets the bisector of c and x.
+  Corner cut(const Corner& a, CellId c, CellId x, std::uint32_t t) const {
+    const CellId lo = std::min(c, x), hi = std::max(c, x);
+    if (!a.out.bisector) {
+      return {Key{KeyKind::EdgeCut, {a.out.a, a.out.b, lo, hi}}, edge_cut(a.out.a, a.out.b, lo, hi), a.out};
+    }
+    std::array<CellId, 3> cells{a.out.a, a.out.b, x};
+    std::sort(cells.begin(), cells.end());
+    return {Key{KeyKind::TriangleCut, {t, cells[0], cells[1], cells[2]}}, triangle_cut(t, cells), a.out};
+  }
+
+  // Sutherland-Hodgman: the part of `polygon` nearer c's seed than x's.
+  Polygon clip(const Polygon& polygon, CellId c, CellId x, std::uint32_t t) const {
+    const std::size_t n = polygon.size();
+    std::array<int, 64> small_sides{};
+    std::vector<int> large_sides;
+    int* sides = small_sides.data();
+    if (n > small_sides.size()) {
+      large_sides.resize(n);
+      sides = large_sides.data();
+    }
+    bool any_out = false, any_in = false;
+    for (std::size_t k = 0; k < n; ++k) {
+      sides[k] = side(polygon[k], c, x);
+      any_out |= sides[k] > 0;
+      any_in |= sides[k] < 0;
+    }
+    if (!any_out) return polygon;
+    if (!any_in) return {};
+    const Support along{true, c, x};
+    Polygon out;
+    out.reserve(n + 2);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Corner& a = polygon[k];
+      const int sa = sides[k], sb = sides[(k + 1) % n];
+      if (sa <= 0 && sb <= 0) {
+        out.push_back(a);
+      } else if (sa < 0) {  // leaving: the cut starts an edge along the bisector
+        out.push_back(a);
+        Corner x_point = cut(a, c, x, t);
+        x_point.out = along;
+        out.push_back(x_point);
+      } else if (sa == 0) {
+        out.push_back({a.key, a.p, along});
+      } else if (sb < 0) {  // entering
+        out.push_back(cut(a, c, x, t));
+      }
+    }
+    // Corners the bisector passes through exactly may repeat.
+    std::vector<Corner> unique;
+    unique.reserve(out.size());
+    for (const Corner& k : out) {
+      if (unique.empty() || unique.back().key != k.key) unique.push_back(k);
+    }
+    while (unique.size() > 1 && unique.front().key == unique.back().key) unique.pop_back();
+    if (unique.size() < 3) unique.clear();
+    return unique;
+  }
+
+  const SurfaceMesh& domain_;
+  std::vector<Point> sites_;
+  Cloud cloud_;
+  std::unique_ptr<Tree> tree_;
+  std::vector<std::vector<CellId>> neighbours_;
+};
+
+enum class Side : std::int8_t { Unknown, Inside, Outside };
+
+// The clipped mesh, assembled from the pieces: every face between cells cut along the surface's
+// trace on it, every piece a boundary face of its cell.
+class Assembly {
+ public:
+  Assembly(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material)
+      : voronoi_(voronoi), domain_(domain), material_(material) {}
+
+  VoronoiMesh run(std::vector<Piece> pieces, ClipStats& stats) {
+    number_points(pieces);
+    collect_crossings(pieces);
+    classify_points();
+    collect_traces(pieces);
+    VoronoiMesh out;
+    out.region_names = voronoi_.region_names;
+    out.points = voronoi_.points;
+    out.points.insert(out.points.end(), new_points_.begin(), new_points_.end());
+    std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
+      return std::pair(a.cell, a.triangle) < std::pair(b.cell, b.triangle);
+    });
+    std::size_t face = 0, piece = 0;
+    for (std::size_t c = 0; c < voronoi_.cells.size(); ++c) {
+      bool clipped = false;
+      for (; face < voronoi_.faces.size() && voronoi_.faces[face].owner == static_cast<std::int32_t>(c); ++face) {
+        clipped |= emit_face(face, out, stats);
+      }
+      for (; piece < pieces.size() && pieces[piece].cell == c; ++piece) {
+        emit_piece(pieces[piece], out);
+        ++stats.surface_pieces;
+        clipped = true;
+      }
+      stats.clipped_cells += clipped;
+    }
+    out.cells.resize(voronoi_.cells.size());
+    for (std::size_t c = 0; c < out.cells.size(); ++c) {
+      const VoronoiCell& in = voronoi_.cells[c];
+      out.cells[c].seed = in.seed;
+      out.cells[c].site = in.site;
+      out.cells[c].seed_kind = in.seed_kind;
+      out.cells[c].region = in.region;
+    }
+    for (std::size_t f = 0; f < out.faces.size(); ++f) {
+      out.cells[static_cast<std::size_t>(out.faces[f].owner)].faces.push_back(static_cast<Index>(f));
+      if (out.faces[f].neighbour != kNoCell) {
+        out.cells[static_cast<std::size_t>(out.faces[f].neighbour)].faces.push_back(static_cast<Index>(f));
+      }
+    }
+    for (std::size_t c = 0; c < out.cells.size(); ++c) {
+      if (out.cells[c].faces.empty()) {
+        throw Error(Error::Kind::Internal, c_format("the clipped cell of seed %u has no face", out.cells[c].seed));
+      }
+    }
+    cells::renumber_points(out);
+    geometry::measure_cells(out);
+    return out;
+  }
+
+ private:
+  // Whether the triangle's normal (right-hand rule) points out of the material.
+  bool faces_out(std::uint32_t t) const { return domain_.face_regions[t].back == material_; }
+
+  Point outward_normal(std::uint32_t t) const {
+    const Triangle& tri = domain_.triangles[t];
+    const Point n = (domain_.vertices[tri[1]] - domain_.vertices[tri[0]])
+                        .cross(domain_.vertices[tri[2]] - domain_.vertices[tri[0]]);
+    return faces_out(t) ? n : Point(-n);
+  }
+
+  // The new points, after the Voronoi vertices, in the order of their keys.
+  void number_points(const std::vector<Piece>& pieces) {
+    for (const Piece& piece : pieces) {
+      for (const Corner& k : piece.corners) keys_.emplace_back(k.key, k.p);
+    }
+    std::sort(keys_.begin(), keys_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    keys_.erase(
+        std::unique(keys_.begin(), keys_.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
+        keys_.end());
+    new_points_.reserve(keys_.size());
+    for (const auto& [key, p] : keys_) new_points_.push_back(p);
+  }
+
+  Index point_of(const Key& key) const {
+    const auto it =
+        std::lower_bound(keys_.begin(), keys_.end(), key, [](const auto& a, const Key& k) { return a.first < k; });
+    const auto p = static_cast<Index>(voronoi_.points.size() + static_cast<std::size_t>(it - keys_.begin()));
+    const auto alias = alias_.find(p);
+    return alias == alias_.end() ? p : alias->second;
+  }
+
+  const Point& point(Index p) const {
+    return p < voronoi_.points.size() ? voronoi_.points[p] : new_points_[p - voronoi_.points.size()];
+  }
+
+  void collect_crossings(const std::vector<Piece>& pieces) {
+    for (const Piece& piece : pieces) {
+      for (const Corner& k : piece.corners) {
+        if (k.key.kind == KeyKind::TriangleCut) {
+          crossings_.push_back({{k.key.ids[1], k.key.ids[2], k.key.ids[3]}, point_of(k.key), k.key.ids[0]});
+        }
+      }
+    }
+    std::sort(crossings_.begin(), crossings_.end());
+    crossings_.erase(std::unique(crossings_.begin(), crossings_.end()), crossings_.end());
+    // The cells about each Voronoi edge, from the faces that have it.
+    std::vector<std::pair<std::uint64_t, std::int32_t>> edge_cells;
+    for (const VoronoiFace& f : voronoi_.faces) {
+      for (std::size_t k = 0; k < f.points.size(); ++k) {
+        const std::uint64_t e = pair_key(f.points[k], f.points[(k + 1) % f.points.size()]);
+        edge_cells.emplace_back(e, f.owner);
+        edge_cells.emplace_back(e, f.neighbour);
+      }
+    }
+    std::sort(edge_cells.begin(), edge_cells.end());
+    edge_cells.erase(std::unique(edge_cells.begin(), edge_cells.end()), edge_cells.end());
+    for (std::size_t i = 0; i < edge_cells.size();) {
+      std::size_t j = i;
+      std::vector<CellId> around;
+      for (; j < edge_cells.size() && edge_cells[j].first == edge_cells[i].first; ++j) {
+        if (edge_cells[j].second != kNoCell) around.push_back(static_cast<CellId>(edge_cells[j].second));
+      }
+      edges_.push_back(edge_cells[i].first);
+      add_edge_crossings(edge_cells[i].first, around);
+      i = j;
+    }
+  }
+
+  // The crossings on the Voronoi edge `e`, ordered from its lower point to its higher.
+  void add_edge_crossings(std::uint64_t e, const std::vector<CellId>& around) {
+    std::vector<std::pair<double, Crossing>> on_edge;
+    const auto a = static_cast<Index>(e >> 32), b = static_cast<Index>(e & 0xffffffffu);
+    const Point d = point(b) - point(a);
+    for (std::size_t i = 0; i < around.size(); ++i) {
+      for (std::size_t j = i + 1; j < around.size(); ++j) {
+        for (std::size_t k = j + 1; k < around.size(); ++k) {
+          std::array<CellId, 3> cells{around[i], around[j], around[k]};
+          std::sort(cells.begin(), cells.end());
+          const auto lo = std::lower_bound(crossings_.begin(), crossings_.end(), Crossing{cells, 0, 0});
+          for (auto it = lo; it != crossings_.end() && it->cells == cells; ++it) {
+            on_edge.emplace_back((point(it->point) - point(a)).dot(d), *it);
+          }
+        }
+      }
+    }
+    if (on_edge.empty()) return;
+    // A triangle meets a Voronoi edge once. Where four or more cells share the edge (a lattice's
+    // seeds), each cell names the point by the triple it sees: they are one point.
+    std::sort(on_edge.begin(), on_edge.end(), [](const auto& x, const auto& y) {
+      return std::pair(x.second.triangle, x.second.point) < std::pair(y.second.triangle, y.second.point);
+    });
+    std::vector<std::pair<double, Crossing>> unique;
+    for (const auto& c : on_edge) {
+      if (!unique.empty() && unique.back().second.triangle == c.second.triangle) {
+        alias_[c.second.point] = unique.back().second.point;
+      } else {
+        unique.push_back(c);
+      }
+    }
+    std::sort(unique.begin(), unique.end(), [](const auto& x, const auto& y) {
+      return std::pair(x.first, x.second.point) < std::pair(y.first, y.second.point);
+    });
+    std::vector<Crossing> sorted;
+    for (const auto& [t, c] : unique) sorted.push_back(c);
+    edge_crossings_.emplace(e, std::move(sorted));
+  }
+
+  // Inside or outside the material, for every Voronoi vertex: at the ends of an edge the surface
+  // crosses, from the direction it crosses (the surface's outward normal against the edge's);
+  // along edges it does not cross, the same as their other end.
+  void classify_points() {
+    const std::size_t n = voronoi_.points.size();
+    side_.assign(n, Side::Unknown);
+    const auto set = [&](Index p, Side s) {
+      if (side_[p] != Side::Unknown && side_[p] != s) {
+        throw Error(Error::Kind::Internal,
+                    c_format("the surface's crossings disagree on which side of it Voronoi vertex %s lies",
+                             describe_point(point(p)).c_str()));
+      }
+      side_[p] = s;
+    };
+    std::vector<std::vector<Index>> adjacent(n);
+    for (std::uint64_t e : edges_) {
+      const auto a = static_cast<Index>(e >> 32), b = static_cast<Index>(e & 0xffffffffu);
+      const auto it = edge_crossings_.find(e);
+      if (it == edge_crossings_.end()) {
+        adjacent[a].push_back(b);
+        adjacent[b].push_back(a);
+        continue;
+      }
+      const Point d = point(b) - point(a);
+      bool exits = false;
+      for (std::size_t k = 0; k < it->second.size(); ++k) {
+        const bool out = outward_normal(it->second[k].triangle).dot(d) > 0;
+        if (k > 0 && out == exits) {
+          throw Error(Error::Kind::Internal, c_format("the surface enters a Voronoi edge twice in a row near %s",
+                                                      describe_point(point(it->second[k].point)).c_str()));
+        }
+        exits = out;
+        if (k == 0) set(a, out ? Side::Inside : Side::Outside);
+      }
+      set(b, exits ? Side::Outside : Side::Inside);
+    }
+    std::vector<Index> stack;
+    for (Index p = 0; p < n; ++p) {
+      if (side_[p] != Side::Unknown) stack.push_back(p);
+    }
+    while (!stack.empty()) {
+      const Index p = stack.back();
+      stack.pop_back();
+      for (Index q : adjacent[p]) {
+        if (side_[q] == Side::Unknown) {
+          side_[q] = side_[p];
+          stack.push_back(q);
+        }
+      }
+    }
+    // No crossing at all (the surface inside one cell): a ray decides.
+    if (std::find(side_.begin(), side_.end(), Side::Unknown) == side_.end()) return;
+    const RegionLocator locate(domain_);
+    for (Index p = 0; p < n; ++p) {
+      if (side_[p] == Side::Unknown) {
+        side_[p] = locate.region_of(point(p)) == material_ ? Side::Inside : Side::Outside;
+      }
+    }
+  }
+
+  // The surface's trace on each face between cells, from the pieces of the face's owner: each
+  // boundary edge of a piece along the bisector, in the direction the face runs about its normal.
+  void collect_traces(const std::vector<Piece>& pieces) {
+    std::unordered_map<std::uint64_t, std::size_t> face_of;
+    for (std::size_t f = 0; f < voronoi_.faces.size(); ++f) {
+      const VoronoiFace& face = voronoi_.faces[f];
+      if (face.neighbour != kNoCell) {
+        face_of.emplace(pair_key(static_cast<CellId>(face.owner), static_cast<CellId>(face.neighbour)), f);
+      }
+    }
+    for (const Piece& piece : pieces) {
+      const std::size_t n = piece.corners.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        const Corner& a = piece.corners[k];
+        if (!a.out.bisector) continue;
+        const auto it = face_of.find(pair_key(a.out.a, a.out.b));
+        if (it == face_of.end() || voronoi_.faces[it->second].owner != static_cast<std::int32_t>(piece.cell)) continue;
+        Index from = point_of(a.key), to = point_of(piece.corners[(k + 1) % n].key);
+        // The piece runs about the surface's outward normal; the face, about the normal out of
+        // its owner, meets it along this edge in the other direction.
+        if (faces_out(piece.triangle)) std::swap(from, to);
+        traces_[it->second].emplace_back(from, to);
+      }
+    }
+  }
+
+  // The part of face f inside the material, as one face per connected part. Returns whether the
+  // surface crosses it.
+  bool emit_face(std::size_t f, VoronoiMesh& out, ClipStats& stats) {
+    const VoronoiFace& face = voronoi_.faces[f];
+    const auto trace = traces_.find(f);
+    std::vector<std::pair<Index, Index>> segments;
+    if (trace != traces_.end()) segments = trace->second;
+    bool crossed = !segments.empty();
+    const std::size_t n = face.points.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Index a = face.points[k], b = face.points[(k + 1) % n];
+      const auto it = edge_crossings_.find(pair_key(a, b));
+      if (it == edge_crossings_.end()) {
+        if (side_[a] == Side::Inside) segments.emplace_back(a, b);
+        continue;
+      }
+      crossed = true;
+      std::vector<Index> along{a};
+      const auto add = [&](const Crossing& c) { along.push_back(c.point); };
+      if (a < b) {
+        std::for_each(it->second.begin(), it->second.end(), add);
+      } else {
+        std::for_each(it->second.rbegin(), it->second.rend(), add);
+      }
+      along.push_back(b);
+      bool inside = side_[a] == Side::Inside;
+      for (std::size_t i = 0; i + 1 < along.size(); ++i, inside = !inside) {
+        if (inside) segments.emplace_back(along[i], along[i + 1]);
+      }
+    }
+    if (face.neighbour == kNoCell) {
+      if (!segments.empty()) {
+        throw Error(Error::Kind::InvalidGeometry,
+                    c_format("the seeds do not cover the material: the cell of seed %u reaches its boundary at %s "
+                             "beyond the other seeds",
+                             face.owner_seed, describe_point(point(face.points.front())).c_str()));
+      }
+      return false;
+    }
+    if (!crossed) {
+      if (side_[face.points.front()] == Side::Inside) {
+        out.faces.push_back(face);
+      } else {
+        ++stats.dropped_faces;
+      }
+      return false;
+    }
+    ++stats.clipped_faces;
+    std::vector<Loop> loops = trace_loops(segments, face);
+    const Point normal = area_vector(face.points);
+    stats.holes += static_cast<std::size_t>(
+        std::count_if(loops.begin(), loops.end(), [&](const Loop& loop) { return area_vector(loop).dot(normal) < 0; }));
+    loops = simple_polygons(
+        std::move(loops), [&](Index p) -> const Point& { return point(p); }, normal);
+    for (std::vector<Index>& loop : loops) {
+      VoronoiFace part = face;
+      part.points = std::move(loop);
+      out.faces.push_back(std::move(part));
+    }
+    return true;
+  }
+
+  Point area_vector(const std::vector<Index>& polygon) const {
+    Point sum = Point::Zero();
+    const Point& o = point(polygon.front());
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+      sum += (point(polygon[k]) - o).cross(point(polygon[k + 1]) - o);
+    }
+    return sum / 2;
+  }
+
+  std::vector<std::vector<Index>> trace_loops(std::vector<std::pair<Index, Index>>& segments,
+                                              const VoronoiFace& face) const {
+    std::sort(segments.begin(), segments.end());
+    segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
+    const auto broken = [&](const char* what) {
+      return Error(
+          Error::Kind::Internal,
+          c_format("the part of the face between the cells of seeds %u and %u inside the material %s near %s",
+                   face.owner_seed, face.neighbour_seed, what, describe_point(point(face.points.front())).c_str()));
+    };
+    std::vector<char> used(segments.size(), 0);
+    std::vector<std::vector<Index>> loops;
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+      if (used[s]) continue;
+      std::vector<Index> loop;
+      std::size_t at = s;
+      while (!used[at]) {
+        used[at] = 1;
+        loop.push_back(segments[at].first);
+        const Index next = segments[at].second;
+        const auto it = std::lower_bound(segments.begin(), segments.end(), std::pair(next, Index{0}));
+        if (it == segments.end() || it->first != next) throw broken("does not close");
+        if (it + 1 != segments.end() && (it + 1)->first == next) throw broken("branches");
+        at = static_cast<std::size_t>(it - segments.begin());
+      }
+      if (at != s) throw broken("does not close");
+      if (loop.size() >= 3) loops.push_back(std::move(loop));
+    }
+    return loops;
+  }
+
+  void emit_piece(const Piece& piece, VoronoiMesh& out) const {
+    VoronoiFace face;
+    face.points.reserve(piece.corners.size());
+    for (const Corner& k : piece.corners) face.points.push_back(point_of(k.key));
+    if (!faces_out(piece.triangle)) std::reverse(face.points.begin(), face.points.end());
+    face.owner = static_cast<std::int32_t>(piece.cell);
+    face.owner_seed = face.neighbour_seed = voronoi_.cells[piece.cell].seed;
+    const RegionPair& sides = domain_.face_regions[piece.triangle];
+    face.regions = {material_, sides.back == material_ ? sides.front : sides.back};
+    out.faces.push_back(std::move(face));
+  }
+
+  const VoronoiMesh& voronoi_;
+  const SurfaceMesh& domain_;
+  std::int32_t material_;
+  std::vector<std::pair<Key, Point>> keys_;
+  std::vector<Point> new_points_;
+  std::vector<Crossing> crossings_;
+  std::unordered_map<Index, Index> alias_;  // a crossing's other names: one point, several keys
+  std::vector<std::uint64_t> edges_;
+  std::unordered_map<std::uint64_t, std::vector<Crossing>> edge_crossings_;
+  std::vector<Side> side_;
+  std::unordered_map<std::size_t, std::vector<std::pair<Index, Index>>> traces_;
+};
+
+}  // namespace
+
+VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material, ClipStats* stats) {
+  if (!domain.has_regions()) {
+    throw Error(Error::Kind::Internal, "clip_cells needs the domain's regions (label_regions)");
+  }
+  std::vector<std::uint32_t> boundary;
+  for (std::uint32_t t = 0; t < domain.num_faces(); ++t) {
+    const RegionPair& r = domain.face_regions[t];
+    if ((r.back == material) != (r.front == material)) boundary.push_back(t);
+  }
+  const RestrictedCells restricted(voronoi, domain);
+  std::vector<std::vector<Piece>> per_triangle(boundary.size());
+  tbb::parallel_for(std::size_t{0}, boundary.size(),
+                    [&](std::size_t i) { per_triangle[i] = restricted.pieces(boundary[i]); });
+  std::vector<Piece> pieces;
+  for (std::vector<Piece>& p : per_triangle) {
+    std::move(p.begin(), p.end(), std::back_inserter(pieces));
+    p = {};
+  }
+  ClipStats local;
+  VoronoiMesh out = Assembly(voronoi, domain, material).run(std::move(pieces), stats ? *stats : local);
+  return out;
+}
+
+}  // namespace vorocrust::clipping

@@ -1,0 +1,47 @@
+// Internal: clipped Voronoi cells (Yan, Wang, Lévy and Liu 2011, sections 4.1-4.2; Ebeida and
+// Mitchell 2011, section 3): every material cell of a Voronoi mesh intersected with the material's
+// region of the input, assembled into one conforming polyhedral mesh.
+//
+// Contract of clip_cells(voronoi, domain, material):
+// - `voronoi` is compute_cells' mesh of seeds that lie inside `material`'s region, bounded by
+//   outside seeds so far away that every face toward one lies outside the region (an outside
+//   seed farther from every point of the region than that point's nearest material seed).
+// - `domain` carries its regions (label_regions); the faces between `material` and any other
+//   region bound it. Every other region is outside: one material per run.
+// - The result's cells are the seeds' cells in the same order. Faces between two cells are the
+//   parts of their Voronoi faces inside the region, one face per connected part; the boundary
+//   faces are the parts of the input triangles inside each cell (the surface's restricted
+//   Voronoi diagram), so the boundary reproduces the input exactly. Every point is computed
+//   once, from what defines it (an input vertex; an input edge and a bisector; an input triangle
+//   and two bisectors; a Voronoi vertex), and shared by every face that has it: cells are closed,
+//   and their volumes add up to the region's.
+// - Cells inside the region are kept as they are: convex, their faces orthogonal to the seed
+//   links. Clipped cells need not be convex; their faces between cells keep the orthogonality.
+//
+// A face's part with holes (a corner of the outside poking through a Voronoi face) is cut into
+// simple polygons between its own points (polygon_holes.hpp).
+//
+// Throws Error(InvalidGeometry) where the seeds do not cover the region (a face toward an
+// outside seed reaches inside it).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "vorocrust/cells.hpp"
+#include "vorocrust/surface_mesh.hpp"
+
+namespace vorocrust::clipping {
+
+struct ClipStats {
+  std::size_t clipped_cells = 0;   // cells the surface crosses
+  std::size_t surface_pieces = 0;  // boundary faces: parts of input triangles
+  std::size_t clipped_faces = 0;   // faces between cells that the surface crosses
+  std::size_t dropped_faces = 0;   // faces between cells wholly outside the region
+  std::size_t holes = 0;           // holes in faces' parts, each cut out by two diagonals
+};
+
+VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material,
+                       ClipStats* stats = nullptr);
+
+}  // namespace vorocrust::clipping

@@ -1,0 +1,48 @@
+// Internal: the clipped methods end to end, from a labelled domain to its clipped Voronoi mesh.
+//
+// Contract of clipped_cells(domain, material, options, phases):
+// - seeds: InteriorMode::Random gives Ebeida and Mitchell's maximal Poisson-disk seeds at
+//   options.radius (poisson_disk_seeds.hpp, phase "interior seeds"); Lattice a cubic lattice of
+//   that spacing, the points inside the material, each moved by up to a thousandth of the spacing
+//   (ties of a perfect lattice are not decided); Cvt the Poisson-disk seeds moved by
+//   options.cvt_iterations Lloyd iterations on the clipped cells (Yan et al. 2011, section 5:
+//   each seed to its clipped cell's centroid, a centroid outside the material leaving its seed
+//   where it was; phase "cvt"). `given`, when not empty, replaces the sampling: the seeds of
+//   `material` among them are the cells, the others are ignored.
+// - then the Voronoi cells of those seeds and the outside seeds (outside_seeds, phase "cells")
+//   and their clipping (clip_cells.hpp, phase "clipping").
+// Returns the seeds (the cells' first, in cell order, then the outside seeds) and the mesh.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "clipping/clip_cells.hpp"
+#include "core/phases.hpp"
+#include "vorocrust/modes.hpp"
+#include "vorocrust/seeds.hpp"
+
+namespace vorocrust::clipping {
+
+struct ClippedOptions {
+  double radius = 0;  // the seeds' Poisson-disk radius, or the lattice's spacing
+  InteriorMode mode = InteriorMode::Random;
+  int cvt_iterations = 20;
+  std::uint64_t seed = 0;
+  int threads = 0;
+  std::vector<Seed> given;
+  // Called with the material seeds before their cells, to refuse a run that would not fit.
+  std::function<void(const std::vector<Seed>&)> before_cells;
+};
+
+struct ClippedMesh {
+  std::vector<Seed> seeds;
+  VoronoiMesh cells;
+  ClipStats stats;
+};
+
+ClippedMesh clipped_cells(const SurfaceMesh& domain, std::int32_t material, const ClippedOptions& options,
+                          Phases& phases);
+
+}  // namespace vorocrust::clipping

@@ -1,0 +1,199 @@
+#include "clipping/poisson_disk_seeds.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "core/c_format.hpp"
+#include "core/split_mix.hpp"
+#include "geometry/box_tree.hpp"
+#include "seeds/locate_regions.hpp"
+#include "vorocrust/error.hpp"
+
+namespace vorocrust::clipping {
+namespace {
+
+constexpr int kLevels = 6;           // cubes split down to a 64th of the grid's side
+constexpr double kDartsPerCube = 2;  // darts at each level, per live cube
+
+struct Cube {
+  Point lo;
+  bool near_surface = false;  // the surface may cross it
+};
+
+geometry::Box box_of(const SurfaceMesh& domain) {
+  geometry::Box box;
+  for (const Point& p : domain.vertices) box.include(p);
+  return box;
+}
+
+class Sampler {
+ public:
+  Sampler(const SurfaceMesh& domain, std::int32_t material, double radius, std::uint64_t seed)
+      : material_(material),
+        r_(radius),
+        side_(radius / std::sqrt(3.0)),
+        locate_(domain),
+        faces_(geometry::face_tree(domain)),
+        random_(seed) {
+    const geometry::Box box = box_of(domain);
+    lo_ = box.lo;
+    for (int k = 0; k < 3; ++k)
+      dims_[k] = std::max<std::int64_t>(1, std::llround(std::ceil((box.hi[k] - box.lo[k]) / side_)));
+    const double cells = static_cast<double>(dims_[0]) * static_cast<double>(dims_[1]) * static_cast<double>(dims_[2]);
+    if (cells > 2e9) {
+      throw Error(Error::Kind::Usage,
+                  c_format("a Poisson-disk radius of %.3g needs a grid of %.3g cubes over the input: raise `max_size`",
+                           radius, cells),
+                  {.option = "max_size"});
+    }
+    grid_.assign(static_cast<std::size_t>(cells), -1);
+  }
+
+  std::vector<Seed> run() {
+    std::vector<Cube> live;
+    for (std::int64_t z = 0; z < dims_[2]; ++z) {
+      for (std::int64_t y = 0; y < dims_[1]; ++y) {
+        for (std::int64_t x = 0; x < dims_[0]; ++x) {
+          Cube c{lo_ + side_ * Point(static_cast<double>(x), static_cast<double>(y), static_cast<double>(z))};
+          if (keep(c, side_)) live.push_back(c);
+        }
+      }
+    }
+    double side = side_;
+    for (int level = 0; level <= kLevels && !live.empty(); ++level) {
+      throw_darts(live, side);
+      std::vector<Cube> next;
+      for (const Cube& c : live) {
+        if (covered(c, side)) continue;
+        if (level == kLevels) break;
+        for (int k = 0; k < 8; ++k) {
+          Cube part{c.lo + side / 2 * Point(k & 1, (k >> 1) & 1, (k >> 2) & 1)};
+          if (keep(part, side / 2)) next.push_back(part);
+        }
+      }
+      live = std::move(next);
+      side /= 2;
+    }
+    return std::move(seeds_);
+  }
+
+ private:
+  std::array<std::int64_t, 3> cell_of(const Point& p) const {
+    std::array<std::int64_t, 3> c{};
+    for (int k = 0; k < 3; ++k) {
+      c[k] = std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((p[k] - lo_[k]) / side_)), 0, dims_[k] - 1);
+    }
+    return c;
+  }
+  std::size_t flat(const std::array<std::int64_t, 3>& c) const {
+    return static_cast<std::size_t>((c[2] * dims_[1] + c[1]) * dims_[0] + c[0]);
+  }
+
+  // Calls visit(seed index) for the seeds of the grid cells within two of p's: every seed
+  // within r of p (r spans less than two grid cells).
+  template <class Visit>
+  bool any_near(const Point& p, Visit&& visit) const {
+    const auto c = cell_of(p);
+    for (std::int64_t z = std::max<std::int64_t>(0, c[2] - 2); z <= std::min(dims_[2] - 1, c[2] + 2); ++z) {
+      for (std::int64_t y = std::max<std::int64_t>(0, c[1] - 2); y <= std::min(dims_[1] - 1, c[1] + 2); ++y) {
+        for (std::int64_t x = std::max<std::int64_t>(0, c[0] - 2); x <= std::min(dims_[0] - 1, c[0] + 2); ++x) {
+          const std::int32_t s = grid_[flat({x, y, z})];
+          if (s >= 0 && visit(seeds_[static_cast<std::size_t>(s)].position)) return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  bool within_r(const Point& p) const {
+    return any_near(p, [&](const Point& s) { return (s - p).squaredNorm() < r_ * r_; });
+  }
+
+  // A seed's ball holds the whole cube: the ball is convex, so holding its corners is enough.
+  bool covered(const Cube& c, double side) const {
+    const Point centre = c.lo + Point::Constant(side / 2);
+    return any_near(centre, [&](const Point& s) {
+      for (int k = 0; k < 8; ++k) {
+        const Point corner = c.lo + side * Point(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+        if ((corner - s).squaredNorm() >= r_ * r_) return false;
+      }
+      return true;
+    });
+  }
+
+  bool inside(const Point& p) const { return locate_.region_of(p) == material_; }
+
+  // Whether a cube may still take a seed: not wholly outside the material and, where the
+  // surface crosses it, some point of its part inside the material (its corners, centre and
+  // face centres, as far as they tell) not yet within r of a seed.
+  bool keep(Cube& c, double side) {
+    geometry::Box box;
+    box.include(c.lo);
+    box.include(c.lo + Point::Constant(side));
+    bool near = false;
+    faces_.for_each_overlap(box, [&](std::uint32_t) { near = true; });
+    c.near_surface = near;
+    if (covered(c, side)) return false;
+    const Point centre = c.lo + Point::Constant(side / 2);
+    if (!near) return inside(centre);
+    for (int k = 0; k < 27; ++k) {
+      const Point p = c.lo + side / 2 * Point(k % 3, (k / 3) % 3, k / 9);
+      if (!within_r(p) && inside(p)) return true;
+    }
+    return false;
+  }
+
+  void throw_darts(std::vector<Cube>& live, double side) {
+    const auto darts = static_cast<std::size_t>(kDartsPerCube * static_cast<double>(live.size()));
+    for (std::size_t d = 0; d < darts; ++d) {
+      const auto i = static_cast<std::size_t>(random_.unit() * static_cast<double>(live.size()));
+      const Cube& c = live[i];
+      const Point p = c.lo + side * Point(random_.unit(), random_.unit(), random_.unit());
+      if (within_r(p) || (c.near_surface && !inside(p))) continue;
+      grid_[flat(cell_of(p))] = static_cast<std::int32_t>(seeds_.size());
+      seeds_.push_back({p, material_, r_, SeedKind::Interior});
+    }
+  }
+
+  std::int32_t material_;
+  double r_, side_;
+  Point lo_;
+  std::array<std::int64_t, 3> dims_{};
+  std::vector<std::int32_t> grid_;
+  std::vector<Seed> seeds_;
+  RegionLocator locate_;
+  geometry::BoxTree faces_;
+  SplitMix64 random_;
+};
+
+}  // namespace
+
+std::vector<Seed> poisson_disk_seeds(const SurfaceMesh& domain, std::int32_t material, double radius,
+                                     std::uint64_t seed) {
+  return Sampler(domain, material, radius, seed).run();
+}
+
+std::vector<Seed> outside_seeds(const SurfaceMesh& domain, double spacing) {
+  const geometry::Box box = box_of(domain);
+  // Farther from every point of the box than any two points of it are apart: whatever the
+  // material seeds, a point of the material is nearer one of them than any outside seed.
+  const double margin = (box.hi - box.lo).norm() + spacing;
+  const Point lo = box.lo - Point::Constant(margin), hi = box.hi + Point::Constant(margin);
+  std::array<int, 3> n{};
+  for (int k = 0; k < 3; ++k) n[k] = std::max(1, static_cast<int>(std::ceil((hi[k] - lo[k]) / (4 * spacing))));
+  std::vector<Seed> seeds;
+  for (int z = 0; z <= n[2]; ++z) {
+    for (int y = 0; y <= n[1]; ++y) {
+      for (int x = 0; x <= n[0]; ++x) {
+        if (x != 0 && x != n[0] && y != 0 && y != n[1] && z != 0 && z != n[2]) continue;
+        const Point t(double(x) / n[0], double(y) / n[1], double(z) / n[2]);
+        seeds.push_back({lo + (hi - lo).cwiseProduct(t), kOutsideRegion, spacing, SeedKind::Outside});
+      }
+    }
+  }
+  return seeds;
+}
+
+}  // namespace vorocrust::clipping

@@ -1,0 +1,184 @@
+#!/usr/bin/env python3
+"""`vorocrust mesh --method clipped` checked by outside tools: VTK's reader on mesh.vtu, OpenFOAM's
+checkMesh on case/, SciPy's k-d tree on seeds.csv.
+
+What every clipped mesh must show: the cells' volumes add up to the volume the input encloses;
+their boundary is the input surface (its area, to rounding); faces between cells lie on their
+seeds' bisectors; the Poisson-disk seeds are at least r apart and leave no point of the volume
+farther than r from a seed (by sampling); two --seed values give two meshes (an ensemble); the
+same --seed gives the same mesh. checkMesh's topology and cell closure pass; its face-pyramid test
+fails on cells that reflex edges make non-convex, which is what clipping does to cells.
+
+Run by CTest as: /usr/bin/python3 test_clipped.py VOROCRUST_BINARY MODELS_DIR
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy
+import vtk
+from scipy.spatial import cKDTree
+from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from volume_mesh import check_mesh, read_vtu, vtk_boundary_volume, vtk_link_angles  # noqa: E402
+
+BINARY, MODELS = sys.argv[1:3]
+del sys.argv[1:3]
+
+
+def run(*args):
+    return subprocess.run([BINARY, *args], capture_output=True, text=True, timeout=600)
+
+
+def read_seeds(path):
+    with open(path) as f:
+        rows = [line.strip().split(",") for line in f.readlines()[1:]]
+    return numpy.array([[float(x) for x in r[:3]] for r in rows]), [int(r[3]) for r in rows]
+
+
+def surface_of(grid):
+    """The faces of the grid used by one cell only, as VTK finds them."""
+    surface = vtk.vtkDataSetSurfaceFilter()
+    surface.SetInputData(grid)
+    surface.Update()
+    return surface.GetOutput()
+
+
+def area(polydata):
+    triangles = vtk.vtkTriangleFilter()
+    triangles.SetInputData(polydata)
+    mass = vtk.vtkMassProperties()
+    mass.SetInputConnection(triangles.GetOutputPort())
+    mass.Update()
+    return mass.GetSurfaceArea()
+
+
+def ply_area(path):
+    """The area of a binary PLY triangle surface, in double precision (VTK's reader keeps floats)."""
+    with open(path, "rb") as f:
+        header = []
+        while not header or header[-1] != "end_header":
+            header.append(f.readline().decode().strip())
+        vertices = int(next(h.split()[2] for h in header if h.startswith("element vertex")))
+        faces = int(next(h.split()[2] for h in header if h.startswith("element face")))
+        extra = sum(1 for h in header[header.index(next(h for h in header if h.startswith("element face"))) + 2:]
+                    if h.startswith("property int"))
+        points = numpy.frombuffer(f.read(24 * vertices), dtype="<f8").reshape(-1, 3)
+        record = numpy.dtype([("n", "u1"), ("v", "<i4", 3), ("extra", "<i4", extra)])
+        triangles = numpy.frombuffer(f.read(record.itemsize * faces), dtype=record)["v"]
+    a, b, c = points[triangles[:, 0]], points[triangles[:, 1]], points[triangles[:, 2]]
+    return float(numpy.linalg.norm(numpy.cross(b - a, c - a), axis=1).sum() / 2)
+
+
+def points_inside(surface, points):
+    """The points inside a closed surface, by VTK's own test."""
+    cloud = vtk.vtkPolyData()
+    vtk_points = vtk.vtkPoints()
+    vtk_points.SetData(numpy_to_vtk(points, deep=True))
+    cloud.SetPoints(vtk_points)
+    select = vtk.vtkSelectEnclosedPoints()
+    select.SetInputData(cloud)
+    select.SetSurfaceData(surface)
+    select.SetTolerance(1e-9)
+    select.Update()
+    inside = vtk_to_numpy(select.GetOutput().GetPointData().GetArray("SelectedPoints"))
+    return points[inside.astype(bool)]
+
+
+class Clipped(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.mkdtemp(prefix="vorocrust-clipped-")
+
+    def mesh(self, model, *options, name="out"):
+        out = os.path.join(self.dir, name)
+        r = run("mesh", os.path.join(MODELS, model), "-o", out, "--method", "clipped", "-q", *options)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            return out, json.load(f)
+
+    def check_clipped(self, model, *options, radius=None):
+        out, report = self.mesh(model, *options)
+        grid = read_vtu(os.path.join(out, "mesh.vtu"))
+        seeds, labels = read_seeds(os.path.join(out, "seeds.csv"))
+        material = numpy.array(labels) > 0
+        self.assertEqual(grid.GetNumberOfCells(), int(material.sum()))
+        # Volumes: the cells', and what their outer surface encloses, as the input's.
+        enclosed = report["regions"][1]["volume"]
+        self.assertAlmostEqual(report["cells"]["volume"] / enclosed, 1, delta=1e-9)
+        self.assertAlmostEqual(vtk_boundary_volume(grid) / enclosed, 1, delta=1e-9)
+        # The boundary is the input surface: its area, to rounding.
+        surface = surface_of(grid)
+        with open(os.path.join(out, "surface.obj")) as f:
+            self.assertTrue(f.read(1))
+        model_surface = self.model_surface(out)
+        self.assertAlmostEqual(area(surface) / ply_area(os.path.join(out, "surface.ply")), 1, delta=1e-9)
+        # Faces between cells stay orthogonal to their seeds' links.
+        largest, shared = vtk_link_angles(grid, seeds.tolist())
+        self.assertGreater(shared, 0)
+        self.assertLess(largest, 1e-5)
+        # Poisson-disk seeds: at least r apart, and every sampled point of the volume within r of one.
+        if radius is not None:
+            inner = seeds[material]
+            tree = cKDTree(inner)
+            pairs = tree.query_pairs(radius * (1 - 1e-12))
+            self.assertEqual(len(pairs), 0)
+            lo, hi = inner.min(axis=0) - radius, inner.max(axis=0) + radius
+            samples = numpy.random.default_rng(1).uniform(lo, hi, size=(20000, 3))
+            inside = points_inside(model_surface, samples)
+            self.assertGreater(len(inside), 1000)
+            distance, _ = tree.query(inside)
+            self.assertLess(distance.max(), 1.02 * radius)
+        # checkMesh: topology, closed cells and positive volumes.
+        result, _ = check_mesh(os.path.join(out, "case"))
+        for line in ("Boundary definition OK", "Cell to face addressing OK", "Point usage OK", "Face vertices OK",
+                     "Number of regions: 1 (OK)", "Boundary openness", "Cell volumes OK", "Face area magnitudes OK"):
+            self.assertIn(line, result.stdout, model)
+        self.assertNotIn("Max cell openness = ", [l.strip() for l in result.stdout.splitlines()
+                                                   if "openness" in l and "OK" not in l])
+        return out, report, grid
+
+    def model_surface(self, out):
+        reader = vtk.vtkPLYReader()
+        reader.SetFileName(os.path.join(out, "surface.ply"))
+        reader.Update()
+        return reader.GetOutput()
+
+    def test_cad_models(self):
+        self.check_clipped("cgal_fandisk.off", "--max-size", "0.1", radius=0.1)
+        self.check_clipped("sandia_bracket.obj", "--max-size", "4", radius=4)
+
+    def test_a_smooth_model(self):
+        self.check_clipped("igl_bunny.off", "--max-size", "0.006", radius=0.006)
+
+    def test_cvt_and_lattice(self):
+        for mode in ("cvt", "lattice"):
+            _, report, _ = self.check_clipped("cgal_joint.off", "--interior", mode, "--cvt-iterations", "5")
+            self.assertGreater(report["cells"]["cells"], 100, mode)
+
+    def test_an_ensemble_of_meshes(self):
+        a, _ = self.mesh("cgal_joint.off", "--seed", "1", name="a")
+        b, _ = self.mesh("cgal_joint.off", "--seed", "2", name="b")
+        c, _ = self.mesh("cgal_joint.off", "--seed", "1", name="c")
+        seeds = [read_seeds(os.path.join(d, "seeds.csv"))[0] for d in (a, b, c)]
+        self.assertFalse(numpy.array_equal(seeds[0], seeds[1]))
+        with open(os.path.join(a, "mesh.vtu"), "rb") as fa, open(os.path.join(c, "mesh.vtu"), "rb") as fc:
+            self.assertEqual(fa.read(), fc.read())
+
+    def test_inputs_it_cannot_clip_are_refused(self):
+        r = run("mesh", os.path.join(MODELS, "sandia_cube_test_02.obj"), "-o", os.path.join(self.dir, "m"),
+                "--method", "clipped")
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("one material", r.stderr)
+        r = run("mesh", os.path.join(MODELS, "gmsh_terrain.stl"), "-o", os.path.join(self.dir, "t"),
+                "--method", "clipped")
+        self.assertEqual(r.returncode, 4, r.stderr)
+        self.assertIn("open sheet", r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.dir, "t", "mesh.vtu")))
+
+
+if __name__ == "__main__":
+    unittest.main()
