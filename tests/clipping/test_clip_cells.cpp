@@ -7,6 +7,8 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <set>
+#include <tuple>
 #include <vector>
 
 #include "clipping/clip_cells.hpp"
@@ -177,6 +179,17 @@ TEST(ClipCells, CubeCellsAddUpToTheCube) {
     ++kept;
   }
   EXPECT_EQ(kept + stats.clipped_cells, 300u);
+  // A cell's part of one side of the cube is one face, whatever the triangles under it.
+  EXPECT_GT(stats.surface_pieces, 0u);
+  for (std::size_t c = 0; c < clipped.cells.size(); ++c) {
+    std::set<std::tuple<long, long, long>> sides;
+    for (Index f : clipped.cells[c].faces) {
+      if (clipped.faces[f].neighbour != kNoCell) continue;
+      const Point n = face_geometry(clipped, f).normal;
+      EXPECT_NEAR(n.cwiseAbs().maxCoeff(), 1, 1e-12);
+      EXPECT_TRUE(sides.emplace(std::lround(n.x()), std::lround(n.y()), std::lround(n.z())).second) << "cell " << c;
+    }
+  }
 }
 
 TEST(ClipCells, CellsAboutACavityAreNotConvexAndStillAddUp) {

@@ -7,7 +7,10 @@
 #include <array>
 #include <compare>
 #include <iterator>
+#include <map>
 #include <memory>
+#include <set>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -16,6 +19,7 @@
 #include "cells/renumber_points.hpp"
 #include "clipping/polygon_holes.hpp"
 #include "core/c_format.hpp"
+#include "core/union_find.hpp"
 #include "geometry/measure_cells.hpp"
 #include "geometry/point_cloud.hpp"
 #include "seeds/locate_regions.hpp"
@@ -267,9 +271,10 @@ class Assembly {
       for (; face < voronoi_.faces.size() && voronoi_.faces[face].owner == static_cast<std::int32_t>(c); ++face) {
         clipped |= emit_face(face, out, stats);
       }
-      for (; piece < pieces.size() && pieces[piece].cell == c; ++piece) {
-        emit_piece(pieces[piece], out);
-        ++stats.surface_pieces;
+      const std::size_t first = piece;
+      while (piece < pieces.size() && pieces[piece].cell == c) ++piece;
+      if (piece > first) {
+        emit_surface(std::span(pieces).subspan(first, piece - first), out, stats);
         clipped = true;
       }
       stats.clipped_cells += clipped;
@@ -594,16 +599,93 @@ class Assembly {
     return loops;
   }
 
-  void emit_piece(const Piece& piece, VoronoiMesh& out) const {
-    VoronoiFace face;
-    face.points.reserve(piece.corners.size());
-    for (const Corner& k : piece.corners) face.points.push_back(point_of(k.key));
-    if (!faces_out(piece.triangle)) std::reverse(face.points.begin(), face.points.end());
-    face.owner = static_cast<std::int32_t>(piece.cell);
-    face.owner_seed = face.neighbour_seed = voronoi_.cells[piece.cell].seed;
-    const RegionPair& sides = domain_.face_regions[piece.triangle];
-    face.regions = {material_, sides.back == material_ ? sides.front : sides.back};
-    out.faces.push_back(std::move(face));
+  std::vector<Index> outward_polygon(const Piece& piece) const {
+    std::vector<Index> polygon;
+    polygon.reserve(piece.corners.size());
+    for (const Corner& k : piece.corners) polygon.push_back(point_of(k.key));
+    if (!faces_out(piece.triangle)) std::reverse(polygon.begin(), polygon.end());
+    return polygon;
+  }
+
+  Point unit_normal(std::uint32_t t) const { return outward_normal(t).normalized(); }
+
+  // Two pieces of one cell side by side lie in one plane of one part of the input: triangles of
+  // one group, with the same regions, whose normals agree to 1e-12.
+  bool flat_together(std::uint32_t s, std::uint32_t t) const {
+    return domain_.face_group[s] == domain_.face_group[t] && domain_.face_regions[s] == domain_.face_regions[t] &&
+           unit_normal(s).dot(unit_normal(t)) > 1 - 1e-12;
+  }
+
+  // A cell's boundary faces: its pieces, those side by side in one plane joined into one face, so
+  // that a flat side of a CAD model that crosses a cell is one face of it, not one per triangle.
+  void emit_surface(std::span<const Piece> pieces, VoronoiMesh& out, ClipStats& stats) const {
+    stats.surface_pieces += pieces.size();
+    std::vector<std::vector<Index>> polygons;
+    for (const Piece& p : pieces) polygons.push_back(outward_polygon(p));
+    std::map<std::pair<Index, Index>, std::uint32_t> edge_of;
+    for (std::uint32_t i = 0; i < polygons.size(); ++i) {
+      for (std::size_t k = 0; k < polygons[i].size(); ++k) {
+        edge_of.emplace(std::pair(polygons[i][k], polygons[i][(k + 1) % polygons[i].size()]), i);
+      }
+    }
+    UnionFind together(polygons.size());
+    for (const auto& [edge, i] : edge_of) {
+      const auto twin = edge_of.find({edge.second, edge.first});
+      if (twin != edge_of.end() && flat_together(pieces[i].triangle, pieces[twin->second].triangle)) {
+        together.unite(i, twin->second);
+      }
+    }
+    std::map<std::uint32_t, std::vector<std::uint32_t>> groups;
+    for (std::uint32_t i = 0; i < polygons.size(); ++i) groups[together.find(i)].push_back(i);
+    for (const auto& [root, members] : groups) {
+      std::vector<std::vector<Index>> faces;
+      if (members.size() > 1) faces = joined(polygons, members, unit_normal(pieces[root].triangle));
+      if (faces.empty()) {
+        for (std::uint32_t i : members) faces.push_back(polygons[i]);
+      }
+      for (std::vector<Index>& f : faces) {
+        VoronoiFace face;
+        face.points = std::move(f);
+        face.owner = static_cast<std::int32_t>(pieces[root].cell);
+        face.owner_seed = face.neighbour_seed = voronoi_.cells[pieces[root].cell].seed;
+        const RegionPair& sides = domain_.face_regions[pieces[root].triangle];
+        face.regions = {material_, sides.back == material_ ? sides.front : sides.back};
+        out.faces.push_back(std::move(face));
+      }
+    }
+  }
+
+  // The outline of the polygons `members` side by side: the edges not shared between two of them,
+  // traced into loops, holes cut out. Empty where the outline touches itself at a point.
+  std::vector<std::vector<Index>> joined(const std::vector<std::vector<Index>>& polygons,
+                                         const std::vector<std::uint32_t>& members, const Point& normal) const {
+    std::set<std::pair<Index, Index>> edges;
+    for (std::uint32_t i : members) {
+      for (std::size_t k = 0; k < polygons[i].size(); ++k) {
+        const std::pair e(polygons[i][k], polygons[i][(k + 1) % polygons[i].size()]);
+        if (!edges.erase({e.second, e.first})) edges.insert(e);
+      }
+    }
+    std::map<Index, Index> next;
+    for (const auto& [a, b] : edges) {
+      if (!next.emplace(a, b).second) return {};
+    }
+    std::vector<Loop> loops;
+    while (!next.empty()) {
+      Loop loop;
+      Index at = next.begin()->first;
+      while (true) {
+        const auto it = next.find(at);
+        if (it == next.end()) break;
+        loop.push_back(at);
+        at = it->second;
+        next.erase(it);
+      }
+      if (at != loop.front()) return {};
+      loops.push_back(std::move(loop));
+    }
+    return simple_polygons(
+        std::move(loops), [&](Index p) -> const Point& { return point(p); }, normal);
   }
 
   const VoronoiMesh& voronoi_;

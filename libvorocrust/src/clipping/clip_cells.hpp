@@ -11,7 +11,8 @@
 // - The result's cells are the seeds' cells in the same order. Faces between two cells are the
 //   parts of their Voronoi faces inside the region, one face per connected part; the boundary
 //   faces are the parts of the input triangles inside each cell (the surface's restricted
-//   Voronoi diagram), so the boundary reproduces the input exactly. Every point is computed
+//   Voronoi diagram), so the boundary reproduces the input exactly; a cell's parts side by side
+//   in one plane of one input group are joined into one face. Every point is computed
 //   once, from what defines it (an input vertex; an input edge and a bisector; an input triangle
 //   and two bisectors; a Voronoi vertex), and shared by every face that has it: cells are closed,
 //   and their volumes add up to the region's.
