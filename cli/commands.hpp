@@ -23,7 +23,11 @@ struct MeshArgs {
   std::vector<std::string> command_line;
 };
 
+// `compare`: the mesh arguments, the method chosen by the command.
+using CompareArgs = MeshArgs;
+
 int run_info(const InfoArgs& args);
+int run_compare(const CompareArgs& args);
 int run_options(bool json);
 int run_mesh(const MeshArgs& args);
 

@@ -52,6 +52,18 @@ int main(int argc, char** argv) {
   mesh.options.add(*mesh_cmd);
   mesh_cmd->add_flag("-q,--quiet", mesh.quiet, "Print nothing but errors");
 
+  CompareArgs compare;
+  CLI::App* compare_cmd = app.add_subcommand(
+      "compare", "Mesh the input with VoroCrust and with clipped cells at one sizing and set them side by side: "
+                 "boundary faces' edges, angles, faces per cell, non-convex cells, faces off their seed links, "
+                 "volume error, time; OUTDIR/compare.json and compare.svg, each mesh in OUTDIR/vorocrust and "
+                 "OUTDIR/clipped");
+  compare_cmd->add_option("INPUT", compare.inputs, "Input meshes (.off .obj .stl .ply); several merge into one model")
+      ->required();
+  compare_cmd->add_option("-o,--output", compare.output_dir, "Output folder (created if missing)")->required();
+  compare.options.add(*compare_cmd);
+  compare_cmd->add_flag("-q,--quiet", compare.quiet, "Print nothing but errors and the table");
+
   Mesh2dArgs mesh2d;
   CLI::App* mesh2d_cmd = add_mesh2d_command(app, mesh2d);
 
@@ -140,6 +152,10 @@ int main(int argc, char** argv) {
     if (*check_cmd) return run_check_balls(check);
     if (*quality_cmd) return run_quality(quality);
     if (*cells_cmd) return run_cells(cells);
+    if (*compare_cmd) {
+      compare.command_line.assign(argv, argv + argc);
+      return run_compare(compare);
+    }
     if (*mesh2d_cmd) {
       mesh2d.command_line.assign(argv, argv + argc);
       return run_mesh2d(mesh2d);

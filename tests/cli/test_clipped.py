@@ -168,6 +168,31 @@ class Clipped(unittest.TestCase):
         with open(os.path.join(a, "mesh.vtu"), "rb") as fa, open(os.path.join(c, "mesh.vtu"), "rb") as fc:
             self.assertEqual(fa.read(), fc.read())
 
+    def test_compare_reproduces_the_papers_finding(self):
+        """The paper's Figure 1: a clipped surface has boundary faces with far shorter edges
+        relative to their faces; its cells are not all convex; its volume is exact."""
+        out = os.path.join(self.dir, "compare")
+        r = run("compare", os.path.join(MODELS, "cgal_fandisk.off"), "-o", out, "--max-size", "0.05", "-q")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("boundary face shortest/longest edge, mean", r.stdout)
+        with open(os.path.join(out, "compare.json")) as f:
+            figures = {m["method"]: m for m in json.load(f)["methods"]}
+        vorocrust, clipped = figures["vorocrust"], figures["clipped"]
+        self.assertLess(clipped["boundary_edge_ratio"]["mean"], 0.75 * vorocrust["boundary_edge_ratio"]["mean"])
+        self.assertGreater(clipped["boundary_edge_ratio"]["below_0.1"], 10 * vorocrust["boundary_edge_ratio"]["below_0.1"] + 10)
+        self.assertEqual(vorocrust["non_convex_cells"], 0)
+        self.assertGreater(clipped["non_convex_cells"], 0)
+        self.assertEqual(vorocrust["off_link_faces"], 0)
+        self.assertEqual(clipped["off_link_faces"], 0)
+        self.assertLess(clipped["volume_error"], 1e-9)
+        self.assertEqual(sum(clipped["boundary_edge_ratio"]["histogram"]), clipped["boundary_faces"])
+        for method in ("vorocrust", "clipped"):
+            self.assertTrue(os.path.isfile(os.path.join(out, method, "mesh.vtu")), method)
+        with open(os.path.join(out, "compare.svg")) as f:
+            svg = f.read()
+        self.assertTrue(svg.startswith("<svg") or svg.startswith("<?xml"))
+        self.assertIn("clipped: boundary faces", svg)
+
     def test_inputs_it_cannot_clip_are_refused(self):
         r = run("mesh", os.path.join(MODELS, "sandia_cube_test_02.obj"), "-o", os.path.join(self.dir, "m"),
                 "--method", "clipped")

@@ -27,12 +27,12 @@ RANK["options"] = RANK["core"]  # the option table is vocabulary, as the core ty
 PUBLIC = {
     "read_mesh.hpp": "io", "validate.hpp": "io", "write_mesh.hpp": "io", "merge_surfaces.hpp": "io",
     "surface_from_arrays.hpp": "io", "regions.hpp": "regions", "resolve_self_intersections.hpp": "arrangement",
-    "quality.hpp": "quality", "cell_quality.hpp": "quality",
+    "quality.hpp": "quality", "cell_quality.hpp": "quality", "method_figures.hpp": "quality",
     "face_orthogonality.hpp": "quality", "face_skewness.hpp": "quality", "write_vtu.hpp": "export",
     "write_openfoam.hpp": "export", "write_tough.hpp": "export", "write_pflotran.hpp": "export",
     "write_volume_mesh.hpp": "export", "quality_svg.hpp": "report", "report.hpp": "report",
     "report_html.hpp": "report",
-    "mesh_result.hpp": "mesher", "mesher.hpp": "mesher", "job.hpp": "mesher", "vorocrust.hpp": "mesher",
+    "mesh_result.hpp": "mesher", "mesher.hpp": "mesher", "job.hpp": "mesher", "compare.hpp": "mesher", "vorocrust.hpp": "mesher",
 }
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)

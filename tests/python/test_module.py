@@ -278,6 +278,14 @@ class Module(unittest.TestCase):
         with self.assertRaises(vorocrust.UsageError):
             vorocrust.mesh(JOINT, max_aspect_ratio=2)
 
+    def test_clipped_cells_fill_the_joint_exactly(self):
+        result = vorocrust.mesh(JOINT, method="clipped", seed=3)
+        report = result.report()
+        enclosed = report["regions"][1]["volume"]
+        self.assertAlmostEqual(float(np.sum(result.cells.volumes)) / enclosed, 1, delta=1e-9)
+        self.assertEqual(len(result.cells.volumes), int(np.sum(result.seeds.labels > 0)))
+        self.assertEqual(report["options"]["method"], "clipped")
+
     def test_an_open_sheet_meshes_in_the_box_given(self):
         # A square sheet across the middle of the unit cube: one material on both sides.
         vertices = np.array([[0.2, 0.2, 0.5], [0.8, 0.2, 0.5], [0.8, 0.8, 0.5], [0.2, 0.8, 0.5]])

@@ -244,6 +244,30 @@ class RestrictedCells {
   std::vector<std::vector<CellId>> neighbours_;
 };
 
+// Whether a triangle's pieces make up its whole area (to 1e-9): no part of it lies in a cell the
+// walk over material cells cannot reach.
+bool covered(const SurfaceMesh& domain, std::uint32_t t, const std::vector<Piece>& pieces) {
+  const auto area = [](const Point& normal, const auto& points) {
+    Point sum = Point::Zero();
+    for (std::size_t k = 0; k < points.size(); ++k) sum += points[k].cross(points[(k + 1) % points.size()]);
+    return sum.dot(normal) / 2;
+  };
+  const Triangle& tri = domain.triangles[t];
+  const std::array<Point, 3> corners{domain.vertices[tri[0]], domain.vertices[tri[1]], domain.vertices[tri[2]]};
+  const Point normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
+  double parts = 0;
+  for (const Piece& piece : pieces) {
+    std::vector<Point> points;
+    for (const Corner& k : piece.corners) points.push_back(k.p - corners[0]);
+    parts += area(normal, points);
+  }
+  const std::array<Point, 3> local{Point::Zero(), corners[1] - corners[0], corners[2] - corners[0]};
+  const double whole = area(normal, local);
+  const double longest =
+      std::max({local[1].squaredNorm(), local[2].squaredNorm(), (local[2] - local[1]).squaredNorm()});
+  return std::abs(parts - whole) <= 1e-9 * whole + 1e-12 * longest;
+}
+
 enum class Side : std::int8_t { Unknown, Inside, Outside };
 
 // The clipped mesh, assembled from the pieces: every face between cells cut along the surface's
@@ -716,14 +740,18 @@ VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, st
   std::vector<std::vector<Piece>> per_triangle(boundary.size());
   tbb::parallel_for(std::size_t{0}, boundary.size(),
                     [&](std::size_t i) { per_triangle[i] = restricted.pieces(boundary[i]); });
+  ClipStats local;
+  ClipStats& figures = stats ? *stats : local;
+  for (std::size_t i = 0; i < boundary.size(); ++i) {
+    if (!covered(domain, boundary[i], per_triangle[i])) ++figures.uncovered_triangles;
+  }
+  if (figures.uncovered_triangles) return {};
   std::vector<Piece> pieces;
   for (std::vector<Piece>& p : per_triangle) {
     std::move(p.begin(), p.end(), std::back_inserter(pieces));
     p = {};
   }
-  ClipStats local;
-  VoronoiMesh out = Assembly(voronoi, domain, material).run(std::move(pieces), stats ? *stats : local);
-  return out;
+  return Assembly(voronoi, domain, material).run(std::move(pieces), figures);
 }
 
 }  // namespace vorocrust::clipping

@@ -22,8 +22,9 @@
 // A face's part with holes (a corner of the outside poking through a Voronoi face) is cut into
 // simple polygons between its own points (polygon_holes.hpp).
 //
-// Throws Error(InvalidGeometry) where the seeds do not cover the region (a face toward an
-// outside seed reaches inside it).
+// Where the outside seeds come so near that part of the surface lies in their cells, the result is
+// empty and stats->uncovered_triangles counts the triangles concerned (move them farther). Throws
+// Error(InvalidGeometry) where a face toward an outside seed reaches inside the region.
 #pragma once
 
 #include <cstddef>
@@ -39,7 +40,10 @@ struct ClipStats {
   std::size_t surface_pieces = 0;  // boundary faces: parts of input triangles
   std::size_t clipped_faces = 0;   // faces between cells that the surface crosses
   std::size_t dropped_faces = 0;   // faces between cells wholly outside the region
-  std::size_t holes = 0;           // holes in faces' parts, each cut out by two diagonals
+  // Input triangles whose parts in the cells leave some of their area out: a part of the surface
+  // nearer an outside seed than every material seed. The mesh is then not assembled (empty).
+  std::size_t uncovered_triangles = 0;
+  std::size_t holes = 0;  // holes in faces' parts, each cut out by two diagonals
 };
 
 VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material,

@@ -6,6 +6,7 @@
 #include "core/split_mix.hpp"
 #include "seeds/locate_regions.hpp"
 #include "vorocrust/cells.hpp"
+#include "vorocrust/error.hpp"
 
 namespace vorocrust::clipping {
 namespace {
@@ -40,49 +41,66 @@ std::vector<Seed> lattice_seeds(const SurfaceMesh& domain, std::int32_t material
   return seeds;
 }
 
-VoronoiMesh clip(const SurfaceMesh& domain, std::int32_t material, const std::vector<Seed>& seeds,
-                 const std::vector<Seed>& outside, const ClippedOptions& options, ClipStats* stats) {
-  std::vector<Seed> all = seeds;
-  all.insert(all.end(), outside.begin(), outside.end());
-  return clip_cells(compute_cells(all, {.materials = {material}, .threads = options.threads}), domain, material, stats);
+// The Voronoi cells of the material seeds, bounded by outside seeds `margin` beyond the domain's
+// box, cut to the material. Outside seeds nearer a point of the surface than every material seed
+// would take part of it from the cells (a lattice that misses a thin part, seeds Lloyd moved):
+// then the margin grows fourfold, up to the box's diagonal, beyond which no point of the box is
+// nearer an outside seed than any seed inside it.
+struct Clipping {
+  std::vector<Seed> seeds;  // the material seeds, then the outside seeds
+  VoronoiMesh cells;
+  ClipStats stats;
+};
+
+Clipping clip(const SurfaceMesh& domain, std::int32_t material, const std::vector<Seed>& seeds,
+              const ClippedOptions& options, Phases* phases) {
+  Eigen::AlignedBox3d box;
+  for (const Point& p : domain.vertices) box.extend(p);
+  const double diagonal = box.diagonal().norm();
+  for (double margin = std::min(1.5 * options.radius, diagonal);; margin = std::min(4 * margin, diagonal)) {
+    Clipping c;
+    c.seeds = seeds;
+    for (Seed& s : outside_seeds(domain, margin, options.radius)) c.seeds.push_back(s);
+    const auto cut = [&] {
+      const VoronoiMesh cells = compute_cells(c.seeds, {.materials = {material}, .threads = options.threads});
+      c.cells = clip_cells(cells, domain, material, &c.stats);
+    };
+    if (phases) {
+      (*phases)("cells", cut);
+    } else {
+      cut();
+    }
+    if (c.stats.uncovered_triangles == 0) return c;
+    if (margin >= diagonal) {
+      throw Error(Error::Kind::Internal, "outside seeds beyond the domain's diagonal take part of its surface");
+    }
+  }
 }
 
 }  // namespace
 
 ClippedMesh clipped_cells(const SurfaceMesh& domain, std::int32_t material, const ClippedOptions& options,
                           Phases& phases) {
-  std::vector<Seed> seeds;
-  if (!options.given.empty()) {
-    for (const Seed& s : options.given) {
-      if (s.region == material) seeds.push_back(s);
-    }
-  } else {
-    seeds = phases("interior seeds", [&] {
-      return options.mode == InteriorMode::Lattice ? lattice_seeds(domain, material, options.radius, options.seed)
-                                                   : poisson_disk_seeds(domain, material, options.radius, options.seed);
-    });
-  }
-  const std::vector<Seed> outside = outside_seeds(domain, options.radius);
-  if (options.given.empty() && options.mode == InteriorMode::Cvt) {
+  std::vector<Seed> seeds = phases("interior seeds", [&] {
+    const std::vector<Seed> lattice = options.mode == InteriorMode::Lattice
+                                          ? lattice_seeds(domain, material, options.radius, options.seed)
+                                          : std::vector<Seed>{};
+    return poisson_disk_seeds(domain, material, options.radius, options.seed, lattice);
+  });
+  if (options.mode == InteriorMode::Cvt) {
     phases("cvt", [&] {
       const RegionLocator locate(domain);
       for (int iteration = 0; iteration < options.cvt_iterations; ++iteration) {
-        const VoronoiMesh cells = clip(domain, material, seeds, outside, options, nullptr);
-        for (const VoronoiCell& c : cells.cells) {
-          if (locate.region_of(c.centroid) == material) seeds[c.seed].position = c.centroid;
+        const Clipping c = clip(domain, material, seeds, options, nullptr);
+        for (const VoronoiCell& cell : c.cells.cells) {
+          if (locate.region_of(cell.centroid) == material) seeds[cell.seed].position = cell.centroid;
         }
       }
     });
   }
   if (options.before_cells) options.before_cells(seeds);
-  ClippedMesh result;
-  std::vector<Seed> all = seeds;
-  all.insert(all.end(), outside.begin(), outside.end());
-  const VoronoiMesh cells =
-      phases("cells", [&] { return compute_cells(all, {.materials = {material}, .threads = options.threads}); });
-  result.cells = phases("clipping", [&] { return clip_cells(cells, domain, material, &result.stats); });
-  result.seeds = std::move(all);
-  return result;
+  Clipping c = clip(domain, material, seeds, options, &phases);
+  return {std::move(c.seeds), std::move(c.cells), c.stats};
 }
 
 }  // namespace vorocrust::clipping

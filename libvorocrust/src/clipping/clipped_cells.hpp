@@ -4,13 +4,14 @@
 // - seeds: InteriorMode::Random gives Ebeida and Mitchell's maximal Poisson-disk seeds at
 //   options.radius (poisson_disk_seeds.hpp, phase "interior seeds"); Lattice a cubic lattice of
 //   that spacing, the points inside the material, each moved by up to a thousandth of the spacing
-//   (ties of a perfect lattice are not decided); Cvt the Poisson-disk seeds moved by
-//   options.cvt_iterations Lloyd iterations on the clipped cells (Yan et al. 2011, section 5:
-//   each seed to its clipped cell's centroid, a centroid outside the material leaving its seed
-//   where it was; phase "cvt"). `given`, when not empty, replaces the sampling: the seeds of
-//   `material` among them are the cells, the others are ignored.
-// - then the Voronoi cells of those seeds and the outside seeds (outside_seeds, phase "cells")
-//   and their clipping (clip_cells.hpp, phase "clipping").
+//   (ties of a perfect lattice are not decided), and Poisson-disk seeds where it leaves room (a
+//   thin part between its points); Cvt the Poisson-disk seeds moved by options.cvt_iterations
+//   Lloyd iterations on the clipped cells (Yan et al. 2011, section 5: each seed to its clipped
+//   cell's centroid, a centroid outside the material leaving its seed where it was; phase "cvt").
+// - then the Voronoi cells of those seeds and outside seeds 1.5 radii beyond the domain's box,
+//   cut to the material (clip_cells.hpp; phase "cells"). Where an outside seed is nearer part of
+//   the surface than every material seed, the outside seeds move fourfold farther and the cells
+//   are cut again.
 // Returns the seeds (the cells' first, in cell order, then the outside seeds) and the mesh.
 #pragma once
 
@@ -31,7 +32,6 @@ struct ClippedOptions {
   int cvt_iterations = 20;
   std::uint64_t seed = 0;
   int threads = 0;
-  std::vector<Seed> given;
   // Called with the material seeds before their cells, to refuse a run that would not fit.
   std::function<void(const std::vector<Seed>&)> before_cells;
 };

@@ -30,12 +30,14 @@ geometry::Box box_of(const SurfaceMesh& domain) {
 
 class Sampler {
  public:
-  Sampler(const SurfaceMesh& domain, std::int32_t material, double radius, std::uint64_t seed)
+  Sampler(const SurfaceMesh& domain, std::int32_t material, double radius, std::uint64_t seed,
+          const std::vector<Seed>& placed)
       : material_(material),
         r_(radius),
         side_(radius / std::sqrt(3.0)),
         locate_(domain),
         faces_(geometry::face_tree(domain)),
+        faces_count_(static_cast<std::uint32_t>(domain.num_faces())),
         random_(seed) {
     const geometry::Box box = box_of(domain);
     lo_ = box.lo;
@@ -49,29 +51,18 @@ class Sampler {
                   {.option = "max_size"});
     }
     grid_.assign(static_cast<std::size_t>(cells), -1);
+    for (const Seed& s : placed) add(s);
   }
 
   std::vector<Seed> run() {
-    std::vector<Cube> live;
-    for (std::int64_t z = 0; z < dims_[2]; ++z) {
-      for (std::int64_t y = 0; y < dims_[1]; ++y) {
-        for (std::int64_t x = 0; x < dims_[0]; ++x) {
-          Cube c{lo_ + side_ * Point(static_cast<double>(x), static_cast<double>(y), static_cast<double>(z))};
-          if (keep(c, side_)) live.push_back(c);
-        }
-      }
-    }
+    std::vector<Cube> live = grid_cubes();
     double side = side_;
     for (int level = 0; level <= kLevels && !live.empty(); ++level) {
       throw_darts(live, side);
+      if (level == kLevels) break;
       std::vector<Cube> next;
       for (const Cube& c : live) {
-        if (covered(c, side)) continue;
-        if (level == kLevels) break;
-        for (int k = 0; k < 8; ++k) {
-          Cube part{c.lo + side / 2 * Point(k & 1, (k >> 1) & 1, (k >> 2) & 1)};
-          if (keep(part, side / 2)) next.push_back(part);
-        }
+        if (!covered(c, side)) split(c, side, next);
       }
       live = std::move(next);
       side /= 2;
@@ -125,24 +116,118 @@ class Sampler {
 
   bool inside(const Point& p) const { return locate_.region_of(p) == material_; }
 
-  // Whether a cube may still take a seed: not wholly outside the material and, where the
-  // surface crosses it, some point of its part inside the material (its corners, centre and
-  // face centres, as far as they tell) not yet within r of a seed.
-  bool keep(Cube& c, double side) {
+  void add(const Seed& s) {
+    grid_[flat(cell_of(s.position))] = static_cast<std::int32_t>(seeds_.size());
+    seeds_.push_back(s);
+  }
+
+  bool near_surface(const Point& lo, double side) const {
     geometry::Box box;
-    box.include(c.lo);
-    box.include(c.lo + Point::Constant(side));
+    box.include(lo);
+    box.include(lo + Point::Constant(side));
     bool near = false;
     faces_.for_each_overlap(box, [&](std::uint32_t) { near = true; });
-    c.near_surface = near;
-    if (covered(c, side)) return false;
-    const Point centre = c.lo + Point::Constant(side / 2);
-    if (!near) return inside(centre);
+    return near;
+  }
+
+  // The grid's cubes that may take a seed: those the surface may cross (whose boxes a triangle's
+  // box meets), and those inside the material. The others lie on one side of the surface, as do
+  // their neighbours away from it: one ray decides for each connected set of them.
+  std::vector<Cube> grid_cubes() {
+    enum : std::int8_t { kUnknown, kNear, kInside, kOutside };
+    std::vector<std::int8_t> state(grid_.size(), kUnknown);
+    for (std::uint32_t t = 0; t < faces_count_; ++t) {
+      const geometry::Box& b = faces_.box(t);
+      const auto lo = cell_of(b.lo), hi = cell_of(b.hi);
+      for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+        for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
+          for (std::int64_t x = lo[0]; x <= hi[0]; ++x) state[flat({x, y, z})] = kNear;
+        }
+      }
+    }
+    std::vector<std::array<std::int64_t, 3>> stack;
+    for (std::int64_t z = 0; z < dims_[2]; ++z) {
+      for (std::int64_t y = 0; y < dims_[1]; ++y) {
+        for (std::int64_t x = 0; x < dims_[0]; ++x) {
+          if (state[flat({x, y, z})] != kUnknown) continue;
+          const std::int8_t side = inside(corner_of({x, y, z}) + Point::Constant(side_ / 2)) ? kInside : kOutside;
+          state[flat({x, y, z})] = side;
+          stack.push_back({x, y, z});
+          while (!stack.empty()) {
+            const auto c = stack.back();
+            stack.pop_back();
+            for (int k = 0; k < 6; ++k) {
+              auto d = c;
+              d[k / 2] += k % 2 ? 1 : -1;
+              if (d[k / 2] < 0 || d[k / 2] >= dims_[k / 2] || state[flat(d)] != kUnknown) continue;
+              state[flat(d)] = side;
+              stack.push_back(d);
+            }
+          }
+        }
+      }
+    }
+    std::vector<Cube> live;
+    for (std::int64_t z = 0; z < dims_[2]; ++z) {
+      for (std::int64_t y = 0; y < dims_[1]; ++y) {
+        for (std::int64_t x = 0; x < dims_[0]; ++x) {
+          const std::int8_t s = state[flat({x, y, z})];
+          if (s == kNear || s == kInside) live.push_back({corner_of({x, y, z}), s == kNear});
+        }
+      }
+    }
+    return live;
+  }
+
+  Point corner_of(const std::array<std::int64_t, 3>& c) const {
+    return lo_ + side_ * Point(static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2]));
+  }
+
+  // Whether a point of the cube at a quarter of its side (27 of them) is inside the material and
+  // not yet within r of a seed.
+  bool open_inside(const Cube& c, double side) const {
     for (int k = 0; k < 27; ++k) {
       const Point p = c.lo + side / 2 * Point(k % 3, (k / 3) % 3, k / 9);
       if (!within_r(p) && inside(p)) return true;
     }
     return false;
+  }
+
+  // The parts of an uncovered cube that may still take a seed. The parts of a cube away from the
+  // surface are inside the material, as it is. A cube the surface may cross is tested at its 27
+  // half-side points, its parts' corners: a part the surface may cross is kept where one of its
+  // corners is inside the material and not yet within r of a seed; a part away from it, where
+  // its centre is inside.
+  void split(const Cube& c, double side, std::vector<Cube>& next) {
+    const double half = side / 2;
+    const auto point = [&](int x, int y, int z) -> Point { return c.lo + half * Point(x, y, z); };
+    std::array<bool, 27> open{};
+    if (c.near_surface) {
+      for (int k = 0; k < 27; ++k) {
+        const Point p = point(k % 3, (k / 3) % 3, k / 9);
+        open[static_cast<std::size_t>(k)] = !within_r(p) && inside(p);
+      }
+    }
+    for (int j = 0; j < 8; ++j) {
+      const int jx = j & 1, jy = (j >> 1) & 1, jz = (j >> 2) & 1;
+      Cube part{point(jx, jy, jz), false};
+      if (covered(part, half)) continue;
+      if (!c.near_surface) {
+        next.push_back(part);
+        continue;
+      }
+      part.near_surface = near_surface(part.lo, half);
+      bool keep = false;
+      if (part.near_surface) {
+        for (int k = 0; k < 8 && !keep; ++k) {
+          keep = open[static_cast<std::size_t>((jx + (k & 1)) + 3 * (jy + ((k >> 1) & 1)) + 9 * (jz + ((k >> 2) & 1)))];
+        }
+        keep = keep || open_inside(part, half);
+      } else {
+        keep = inside(part.lo + Point::Constant(half / 2));
+      }
+      if (keep) next.push_back(part);
+    }
   }
 
   void throw_darts(std::vector<Cube>& live, double side) {
@@ -152,8 +237,7 @@ class Sampler {
       const Cube& c = live[i];
       const Point p = c.lo + side * Point(random_.unit(), random_.unit(), random_.unit());
       if (within_r(p) || (c.near_surface && !inside(p))) continue;
-      grid_[flat(cell_of(p))] = static_cast<std::int32_t>(seeds_.size());
-      seeds_.push_back({p, material_, r_, SeedKind::Interior});
+      add({p, material_, r_, SeedKind::Interior});
     }
   }
 
@@ -165,24 +249,22 @@ class Sampler {
   std::vector<Seed> seeds_;
   RegionLocator locate_;
   geometry::BoxTree faces_;
+  std::uint32_t faces_count_;
   SplitMix64 random_;
 };
 
 }  // namespace
 
 std::vector<Seed> poisson_disk_seeds(const SurfaceMesh& domain, std::int32_t material, double radius,
-                                     std::uint64_t seed) {
-  return Sampler(domain, material, radius, seed).run();
+                                     std::uint64_t seed, const std::vector<Seed>& placed) {
+  return Sampler(domain, material, radius, seed, placed).run();
 }
 
-std::vector<Seed> outside_seeds(const SurfaceMesh& domain, double spacing) {
+std::vector<Seed> outside_seeds(const SurfaceMesh& domain, double margin, double spacing) {
   const geometry::Box box = box_of(domain);
-  // Farther from every point of the box than any two points of it are apart: whatever the
-  // material seeds, a point of the material is nearer one of them than any outside seed.
-  const double margin = (box.hi - box.lo).norm() + spacing;
   const Point lo = box.lo - Point::Constant(margin), hi = box.hi + Point::Constant(margin);
   std::array<int, 3> n{};
-  for (int k = 0; k < 3; ++k) n[k] = std::max(1, static_cast<int>(std::ceil((hi[k] - lo[k]) / (4 * spacing))));
+  for (int k = 0; k < 3; ++k) n[k] = std::max(1, static_cast<int>(std::ceil((hi[k] - lo[k]) / spacing)));
   std::vector<Seed> seeds;
   for (int z = 0; z <= n[2]; ++z) {
     for (int y = 0; y <= n[1]; ++y) {

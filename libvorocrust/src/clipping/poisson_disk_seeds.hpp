@@ -4,17 +4,18 @@
 // surface thinner than r / 100 where the refinement stops. Unbiased: every point of the region
 // not yet within r of a seed is as likely as any other to take the next seed.
 //
-// Contract of poisson_disk_seeds(domain, material, radius, seed): `domain` carries its regions
-// (label_regions). A background grid of cubes of side r / sqrt(3) (each holds one seed at most)
+// Contract of poisson_disk_seeds(domain, material, radius, seed, placed): `domain` carries its
+// regions (label_regions); `placed` seeds, at least r apart (a lattice), come first in the result
+// and the sampling fills what they leave. A background grid of cubes of side r / sqrt(3) (each holds one seed at most)
 // takes darts in random live cubes; then every cube no seed's ball covers whole is split in eight
 // and the darts go on among the parts, down to a 64th of the side. Cubes the surface may cross
 // take darts only at points inside the material (a ray decides). Equal seeds give equal samples.
 // The seeds are interior seeds of `material`, with `radius` as their radius.
 //
-// outside_seeds(domain, spacing) gives seeds on a box beyond the domain's by its diagonal, four
-// spacings apart: farther from every point of the domain than any seed inside it, they bound
-// every cell without reaching into a material (clip_cells' condition) whatever the seeds inside
-// (a lattice that misses a thin part, seeds read from a file).
+// outside_seeds(domain, margin, spacing) gives seeds on a box `margin` beyond the domain's, at
+// most `spacing` apart: outside seeds that bound every cell. They keep clear of the material
+// (clip_cells' condition) when every point of it lies within `margin` of a material seed: a
+// margin of 1.5 r does for a maximal sample of radius r.
 #pragma once
 
 #include <cstdint>
@@ -26,8 +27,8 @@
 namespace vorocrust::clipping {
 
 std::vector<Seed> poisson_disk_seeds(const SurfaceMesh& domain, std::int32_t material, double radius,
-                                     std::uint64_t seed);
+                                     std::uint64_t seed, const std::vector<Seed>& placed = {});
 
-std::vector<Seed> outside_seeds(const SurfaceMesh& domain, double spacing);
+std::vector<Seed> outside_seeds(const SurfaceMesh& domain, double margin, double spacing);
 
 }  // namespace vorocrust::clipping
