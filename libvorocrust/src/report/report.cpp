@@ -436,6 +436,10 @@ std::string run_report_json(const RunReport& report, int indent) {
                       {"near_twin_rounds", m.slivers.rounds_for(SliverIteration::Shrunk::ForNearTwins)},
                       {"near_twins_left", m.slivers.iterations.back().near_twins},
                       {"per_iteration", rounds}};
+  }
+  // The output surface: the surface seeds' (or, for clipped cells, the input's own).
+  if (report.result && report.result->surface.num_faces() > 0) {
+    const MeshResult& m = *report.result;
     std::size_t surface_seeds = 0;
     for (const Seed& seed : m.seeds) surface_seeds += seed.kind == SeedKind::Surface;
     doc["surface"] = {{"surface_seeds", surface_seeds},
