@@ -289,19 +289,37 @@ class Assembly {
     std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
       return std::pair(a.cell, a.triangle) < std::pair(b.cell, b.triangle);
     });
-    std::size_t face = 0, piece = 0;
-    for (std::size_t c = 0; c < voronoi_.cells.size(); ++c) {
+    // Each cell's faces (those it owns, then its pieces of the surface) on all threads, then
+    // concatenated in cell order: the mesh does not depend on the threads.
+    const std::size_t cells = voronoi_.cells.size();
+    std::vector<std::size_t> first_face(cells + 1, voronoi_.faces.size()), first_piece(cells + 1, pieces.size());
+    for (std::size_t f = voronoi_.faces.size(); f-- > 0;)
+      first_face[static_cast<std::size_t>(voronoi_.faces[f].owner)] = f;
+    for (std::size_t p = pieces.size(); p-- > 0;) first_piece[pieces[p].cell] = p;
+    for (std::size_t c = cells; c-- > 0;) {
+      first_face[c] = std::min(first_face[c], first_face[c + 1]);
+      first_piece[c] = std::min(first_piece[c], first_piece[c + 1]);
+    }
+    std::vector<std::vector<VoronoiFace>> faces_of(cells);
+    std::vector<ClipStats> stats_of(cells);
+    tbb::parallel_for(std::size_t{0}, cells, [&](std::size_t c) {
       bool clipped = false;
-      for (; face < voronoi_.faces.size() && voronoi_.faces[face].owner == static_cast<std::int32_t>(c); ++face) {
-        clipped |= emit_face(face, out, stats);
-      }
-      const std::size_t first = piece;
-      while (piece < pieces.size() && pieces[piece].cell == c) ++piece;
-      if (piece > first) {
-        emit_surface(std::span(pieces).subspan(first, piece - first), out, stats);
+      for (std::size_t f = first_face[c]; f < first_face[c + 1]; ++f) clipped |= emit_face(f, faces_of[c], stats_of[c]);
+      if (first_piece[c + 1] > first_piece[c]) {
+        emit_surface(std::span(pieces).subspan(first_piece[c], first_piece[c + 1] - first_piece[c]), faces_of[c],
+                     stats_of[c]);
         clipped = true;
       }
-      stats.clipped_cells += clipped;
+      stats_of[c].clipped_cells = clipped;
+    });
+    for (std::size_t c = 0; c < cells; ++c) {
+      std::move(faces_of[c].begin(), faces_of[c].end(), std::back_inserter(out.faces));
+      faces_of[c] = {};
+      stats.clipped_cells += stats_of[c].clipped_cells;
+      stats.surface_pieces += stats_of[c].surface_pieces;
+      stats.clipped_faces += stats_of[c].clipped_faces;
+      stats.dropped_faces += stats_of[c].dropped_faces;
+      stats.holes += stats_of[c].holes;
     }
     out.cells.resize(voronoi_.cells.size());
     for (std::size_t c = 0; c < out.cells.size(); ++c) {
@@ -523,7 +541,7 @@ class Assembly {
 
   // The part of face f inside the material, as one face per connected part. Returns whether the
   // surface crosses it.
-  bool emit_face(std::size_t f, VoronoiMesh& out, ClipStats& stats) {
+  bool emit_face(std::size_t f, std::vector<VoronoiFace>& out, ClipStats& stats) const {
     const VoronoiFace& face = voronoi_.faces[f];
     const auto trace = traces_.find(f);
     std::vector<std::pair<Index, Index>> segments;
@@ -562,7 +580,7 @@ class Assembly {
     }
     if (!crossed) {
       if (side_[face.points.front()] == Side::Inside) {
-        out.faces.push_back(face);
+        out.push_back(face);
       } else {
         ++stats.dropped_faces;
       }
@@ -578,7 +596,7 @@ class Assembly {
     for (std::vector<Index>& loop : loops) {
       VoronoiFace part = face;
       part.points = std::move(loop);
-      out.faces.push_back(std::move(part));
+      out.push_back(std::move(part));
     }
     return true;
   }
@@ -642,7 +660,7 @@ class Assembly {
 
   // A cell's boundary faces: its pieces, those side by side in one plane joined into one face, so
   // that a flat side of a CAD model that crosses a cell is one face of it, not one per triangle.
-  void emit_surface(std::span<const Piece> pieces, VoronoiMesh& out, ClipStats& stats) const {
+  void emit_surface(std::span<const Piece> pieces, std::vector<VoronoiFace>& out, ClipStats& stats) const {
     stats.surface_pieces += pieces.size();
     std::vector<std::vector<Index>> polygons;
     for (const Piece& p : pieces) polygons.push_back(outward_polygon(p));
@@ -674,7 +692,7 @@ class Assembly {
         face.owner_seed = face.neighbour_seed = voronoi_.cells[pieces[root].cell].seed;
         const RegionPair& sides = domain_.face_regions[pieces[root].triangle];
         face.regions = {material_, sides.back == material_ ? sides.front : sides.back};
-        out.faces.push_back(std::move(face));
+        out.push_back(std::move(face));
       }
     }
   }
