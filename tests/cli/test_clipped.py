@@ -106,6 +106,10 @@ class Clipped(unittest.TestCase):
         seeds, labels = read_seeds(os.path.join(out, "seeds.csv"))
         material = numpy.array(labels) > 0
         self.assertEqual(grid.GetNumberOfCells(), int(material.sum()))
+        clipping = report["clipping"]
+        self.assertGreater(clipping["clipped_cells"], 0)
+        self.assertLessEqual(clipping["clipped_cells"], grid.GetNumberOfCells())
+        self.assertGreaterEqual(clipping["surface_pieces"], report["cells"]["boundary_faces"])
         # Volumes: the cells', and what their outer surface encloses, as the input's.
         enclosed = report["regions"][1]["volume"]
         self.assertAlmostEqual(report["cells"]["volume"] / enclosed, 1, delta=1e-9)

@@ -163,7 +163,7 @@ TEST(ClipCells, CubeCellsAddUpToTheCube) {
   const Domain d = box_domain(Point::Zero(), Point::Ones());
   const std::vector<Seed> seeds = seeds_in(d, 300, 1.0, 3);
   const VoronoiMesh voronoi = compute_cells(seeds);
-  clipping::ClipStats stats;
+  ClippingStats stats;
   const VoronoiMesh clipped = clipping::clip_cells(voronoi, d.surface, 1, &stats);
   ASSERT_EQ(clipped.cells.size(), 300u);
   expect_clipped(d, seeds, clipped);
@@ -195,7 +195,7 @@ TEST(ClipCells, CubeCellsAddUpToTheCube) {
 TEST(ClipCells, CellsAboutACavityAreNotConvexAndStillAddUp) {
   const Domain d = box_domain(Point::Zero(), Point(2, 1, 1), Point(0.7, 0.3, 0.35), Point(1.3, 0.7, 0.65));
   const std::vector<Seed> seeds = seeds_in(d, 500, 1.5, 5);
-  clipping::ClipStats stats;
+  ClippingStats stats;
   const VoronoiMesh clipped = clipping::clip_cells(compute_cells(seeds), d.surface, 1, &stats);
   expect_clipped(d, seeds, clipped);
   // The cavity's corners poke through faces: their parts have holes, cut out.

@@ -46,6 +46,8 @@ struct VOROCRUST_API MeshResult {
   // and cells the conforming Voronoi mesh of the material seeds.
   InteriorStats interior;
   VoronoiMesh cells;
+  // What cutting the cells to the input did, for MeshOptions::method Clipped.
+  std::optional<ClippingStats> clipping;
   // The cells measured as the paper's section 3 does (aspect ratio, volume, faces, edges).
   std::optional<CellQuality> cell_quality;
 };

@@ -104,6 +104,19 @@ struct VOROCRUST_API InteriorStats {
   std::size_t estimated_peak_bytes = 0;
 };
 
+// What cutting the cells to the input did (MeshOptions::method Clipped; clipping/clip_cells.hpp).
+struct VOROCRUST_API ClippingStats {
+  std::size_t clipped_cells = 0;   // cells the surface crosses
+  std::size_t surface_pieces = 0;  // parts of input triangles in a cell, before those in one plane join
+  std::size_t clipped_faces = 0;   // faces between cells that the surface crosses
+  std::size_t dropped_faces = 0;   // faces between cells wholly outside the material
+  std::size_t holes = 0;           // holes in faces' parts, each cut out by two diagonals
+  // Input triangles whose parts in the cells leave some of their area out: a part of the surface
+  // nearer an outside seed than every material seed (the outside seeds then move farther, and
+  // the final figures have none).
+  std::size_t uncovered_triangles = 0;
+};
+
 struct VOROCRUST_API FeatureCounts {
   std::size_t sharp_edges = 0, corners = 0, creases = 0, patches = 0;
   std::size_t faces_after_smoothing = 0;

@@ -277,7 +277,7 @@ class Assembly {
   Assembly(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material)
       : voronoi_(voronoi), domain_(domain), material_(material) {}
 
-  VoronoiMesh run(std::vector<Piece> pieces, ClipStats& stats) {
+  VoronoiMesh run(std::vector<Piece> pieces, ClippingStats& stats) {
     number_points(pieces);
     collect_crossings(pieces);
     classify_points();
@@ -301,7 +301,7 @@ class Assembly {
       first_piece[c] = std::min(first_piece[c], first_piece[c + 1]);
     }
     std::vector<std::vector<VoronoiFace>> faces_of(cells);
-    std::vector<ClipStats> stats_of(cells);
+    std::vector<ClippingStats> stats_of(cells);
     tbb::parallel_for(std::size_t{0}, cells, [&](std::size_t c) {
       bool clipped = false;
       for (std::size_t f = first_face[c]; f < first_face[c + 1]; ++f) clipped |= emit_face(f, faces_of[c], stats_of[c]);
@@ -541,7 +541,7 @@ class Assembly {
 
   // The part of face f inside the material, as one face per connected part. Returns whether the
   // surface crosses it.
-  bool emit_face(std::size_t f, std::vector<VoronoiFace>& out, ClipStats& stats) const {
+  bool emit_face(std::size_t f, std::vector<VoronoiFace>& out, ClippingStats& stats) const {
     const VoronoiFace& face = voronoi_.faces[f];
     const auto trace = traces_.find(f);
     std::vector<std::pair<Index, Index>> segments;
@@ -660,7 +660,7 @@ class Assembly {
 
   // A cell's boundary faces: its pieces, those side by side in one plane joined into one face, so
   // that a flat side of a CAD model that crosses a cell is one face of it, not one per triangle.
-  void emit_surface(std::span<const Piece> pieces, std::vector<VoronoiFace>& out, ClipStats& stats) const {
+  void emit_surface(std::span<const Piece> pieces, std::vector<VoronoiFace>& out, ClippingStats& stats) const {
     stats.surface_pieces += pieces.size();
     std::vector<std::vector<Index>> polygons;
     for (const Piece& p : pieces) polygons.push_back(outward_polygon(p));
@@ -745,7 +745,8 @@ class Assembly {
 
 }  // namespace
 
-VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material, ClipStats* stats) {
+VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material,
+                       ClippingStats* stats) {
   if (!domain.has_regions()) {
     throw Error(Error::Kind::Internal, "clip_cells needs the domain's regions (label_regions)");
   }
@@ -758,8 +759,8 @@ VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, st
   std::vector<std::vector<Piece>> per_triangle(boundary.size());
   tbb::parallel_for(std::size_t{0}, boundary.size(),
                     [&](std::size_t i) { per_triangle[i] = restricted.pieces(boundary[i]); });
-  ClipStats local;
-  ClipStats& figures = stats ? *stats : local;
+  ClippingStats local;
+  ClippingStats& figures = stats ? *stats : local;
   for (std::size_t i = 0; i < boundary.size(); ++i) {
     if (!covered(domain, boundary[i], per_triangle[i])) ++figures.uncovered_triangles;
   }

@@ -23,7 +23,8 @@
 // simple polygons between its own points (polygon_holes.hpp).
 //
 // Where the outside seeds come so near that part of the surface lies in their cells, the result is
-// empty and stats->uncovered_triangles counts the triangles concerned (move them farther). Throws
+// empty and stats->uncovered_triangles counts the triangles concerned (move them farther). The
+// figures are vorocrust/stats.hpp's ClippingStats. Throws
 // Error(InvalidGeometry) where a face toward an outside seed reaches inside the region.
 #pragma once
 
@@ -31,22 +32,12 @@
 #include <cstdint>
 
 #include "vorocrust/cells.hpp"
+#include "vorocrust/stats.hpp"
 #include "vorocrust/surface_mesh.hpp"
 
 namespace vorocrust::clipping {
 
-struct ClipStats {
-  std::size_t clipped_cells = 0;   // cells the surface crosses
-  std::size_t surface_pieces = 0;  // boundary faces: parts of input triangles
-  std::size_t clipped_faces = 0;   // faces between cells that the surface crosses
-  std::size_t dropped_faces = 0;   // faces between cells wholly outside the region
-  // Input triangles whose parts in the cells leave some of their area out: a part of the surface
-  // nearer an outside seed than every material seed. The mesh is then not assembled (empty).
-  std::size_t uncovered_triangles = 0;
-  std::size_t holes = 0;  // holes in faces' parts, each cut out by two diagonals
-};
-
 VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material,
-                       ClipStats* stats = nullptr);
+                       ClippingStats* stats = nullptr);
 
 }  // namespace vorocrust::clipping

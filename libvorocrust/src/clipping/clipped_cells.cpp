@@ -49,7 +49,7 @@ std::vector<Seed> lattice_seeds(const SurfaceMesh& domain, std::int32_t material
 struct Clipping {
   std::vector<Seed> seeds;  // the material seeds, then the outside seeds
   VoronoiMesh cells;
-  ClipStats stats;
+  ClippingStats stats;
 };
 
 Clipping clip(const SurfaceMesh& domain, std::int32_t material, const std::vector<Seed>& seeds,

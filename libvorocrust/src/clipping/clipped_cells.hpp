@@ -39,7 +39,7 @@ struct ClippedOptions {
 struct ClippedMesh {
   std::vector<Seed> seeds;
   VoronoiMesh cells;
-  ClipStats stats;
+  ClippingStats stats;
 };
 
 ClippedMesh clipped_cells(const SurfaceMesh& domain, std::int32_t material, const ClippedOptions& options,

@@ -249,6 +249,7 @@ MeshResult run_clipped(const SurfaceMesh& model, const MeshOptions& options, con
   clipping::ClippedMesh mesh = clipping::clipped_cells(input, material, clipped, phase);
   result.seeds = std::move(mesh.seeds);
   result.cells = std::move(mesh.cells);
+  result.clipping = mesh.stats;
   count_seed_kinds(result.seeds, result.interior);
   result.cells.region_names = RegionLocator(input).region_names();
   // The boundary is the input's own: the surface figures compare it with itself.

@@ -473,6 +473,12 @@ std::string run_report_json(const RunReport& report, int indent) {
                      {"estimated_peak_bytes", i.estimated_peak_bytes},
                      {"peak_resident_bytes", peak_resident_bytes()}};
     doc["cells"] = cells_object(m.cells, m.cell_quality ? &*m.cell_quality : nullptr);
+    if (m.clipping) {
+      const ClippingStats& c = *m.clipping;
+      doc["clipping"] = {{"clipped_cells", c.clipped_cells},   {"surface_pieces", c.surface_pieces},
+                         {"clipped_faces", c.clipped_faces},   {"dropped_faces", c.dropped_faces},
+                         {"holes", c.holes}};
+    }
   }
   if (report.mesh && report.input && report.validation) {
     doc["input"] = info_object(report.inputs, *report.mesh, *report.input, *report.validation);
