@@ -42,4 +42,7 @@ VOROCRUST_API std::vector<RegionSummary> label_regions(SurfaceMesh& mesh);
 // The summary label_regions gives, leaving `mesh` as it is (for reports on an input).
 VOROCRUST_API std::vector<RegionSummary> find_regions(const SurfaceMesh& mesh);
 
+// The volume of every region but the outside (label 0): what the materials fill.
+VOROCRUST_API double materials_volume(const std::vector<RegionSummary>& regions);
+
 }  // namespace vorocrust

@@ -7,15 +7,10 @@
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/compare.hpp"
 #include "vorocrust/quality_svg.hpp"
+#include "vorocrust/regions.hpp"
 
 namespace vorocrust {
 namespace {
-
-double enclosed(const std::vector<RegionSummary>& regions) {
-  double volume = 0;
-  for (std::size_t label = 1; label < regions.size(); ++label) volume += regions[label].volume;
-  return volume;
-}
 
 double meshing_seconds(const MeshResult& mesh) {
   double seconds = 0;
@@ -30,7 +25,7 @@ MethodRun run_with(const Job& job, Method method, double max_size, const Progres
   run.options.max_size = max_size;
   if (!job.output_dir.empty()) run.output_dir = job.output_dir / to_string(method);
   const JobResult result = run_job(run, progress, warn);
-  comparison.enclosed_volume = enclosed(result.mesh.regions);
+  comparison.enclosed_volume = materials_volume(result.mesh.regions);
   return {method, max_size, meshing_seconds(result.mesh),
           measure_method_figures(result.mesh.cells, comparison.enclosed_volume)};
 }

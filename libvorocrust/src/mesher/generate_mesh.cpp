@@ -126,8 +126,7 @@ void guard_memory(const std::vector<Seed>& seeds, const MeshOptions& options, In
 // max_size.
 void guard_memory_for_max_size(const std::vector<RegionSummary>& regions, const MeshOptions& options) {
   if (!std::isfinite(options.max_size)) return;
-  double volume = 0;
-  for (std::size_t label = 1; label < regions.size(); ++label) volume += regions[label].volume;
+  const double volume = materials_volume(regions);
   const double machine = static_cast<double>(physical_memory_bytes());
   const bool bounded = std::isfinite(options.max_memory_gb);
   const double bound = bounded ? options.max_memory_gb * 1e9 : machine;

@@ -135,4 +135,10 @@ bool region_labels_hold(const SurfaceMesh& mesh) {
   return true;
 }
 
+double materials_volume(const std::vector<RegionSummary>& regions) {
+  double volume = 0;
+  for (std::size_t label = 1; label < regions.size(); ++label) volume += regions[label].volume;
+  return volume;
+}
+
 }  // namespace vorocrust
