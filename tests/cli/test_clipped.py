@@ -6,7 +6,8 @@ What every clipped mesh must show: the cells' volumes add up to the volume the i
 their boundary is the input surface (its area, to rounding); faces between cells lie on their
 seeds' bisectors; the Poisson-disk seeds are at least r apart and leave no point of the volume
 farther than r from a seed (by sampling); two --seed values give two meshes (an ensemble); the
-same --seed gives the same mesh. checkMesh's topology and cell closure pass; its face-pyramid test
+same --seed gives the same mesh. Several materials: each fills its region, and their cells
+share the faces along every interface. checkMesh's topology and cell closure pass; its face-pyramid test
 fails on cells that reflex edges make non-convex, which is what clipping does to cells.
 
 Run by CTest as: /usr/bin/python3 test_clipped.py VOROCRUST_BINARY MODELS_DIR
@@ -24,7 +25,8 @@ from scipy.spatial import cKDTree
 from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from volume_mesh import check_mesh, read_vtu, vtk_boundary_volume, vtk_link_angles  # noqa: E402
+from volume_mesh import (all_polyhedron_faces, cell_array, check_mesh, read_vtu,  # noqa: E402
+                         vtk_boundary_volume, vtk_link_angles)
 
 BINARY, MODELS = sys.argv[1:3]
 del sys.argv[1:3]
@@ -198,16 +200,79 @@ class Clipped(unittest.TestCase):
         self.assertTrue(svg.startswith("<svg") or svg.startswith("<?xml"))
         self.assertIn("clipped: boundary faces", svg)
 
+    def check_materials(self, model, *options):
+        """Several materials: each one's cells fill its region, every cell is closed (so the faces
+        along each interface are shared, point for point), and random points of the box lie in the
+        cell of their material's nearest seed (by winding numbers, independent of the mesher)."""
+        out, report = self.mesh(model, *options)
+        grid = read_vtu(os.path.join(out, "mesh.vtu"))
+        points = vtk_to_numpy(grid.GetPoints().GetData())
+        materials = cell_array(grid, "material")
+        seed_of = cell_array(grid, "seed")
+        cells = all_polyhedron_faces(grid)
+        centre = points.mean(axis=0)
+        volumes = [polyhedron_volume(points - centre, faces) for faces in cells]
+        regions = report["regions"][1:]
+        self.assertGreater(len(regions), 1)
+        for region in regions:
+            filled = sum(v for v, m in zip(volumes, materials) if m == region["label"])
+            self.assertAlmostEqual(filled / region["volume"], 1, delta=1e-9, msg=region["name"])
+        for c, faces in enumerate(cells):
+            edges = [(f[k], f[(k + 1) % len(f)]) for f in faces for k in range(len(f))]
+            self.assertEqual(sorted(edges), sorted((b, a) for a, b in edges), "cell %d is open" % c)
+        self.assertGreater(report["cells"]["interface_faces"], 0)
+        seeds, labels = read_seeds(os.path.join(out, "seeds.csv"))
+        cell_of_seed = {s: c for c, s in enumerate(seed_of)}
+        lo, hi = points.min(axis=0), points.max(axis=0)
+        samples = numpy.random.default_rng(3).uniform(lo, hi, size=(60, 3))
+        found = 0
+        for q in samples:
+            holding = []
+            for region in regions:
+                own = [i for i, label in enumerate(labels) if label == region["label"]]
+                nearest = own[int(numpy.argmin(numpy.linalg.norm(seeds[own] - q, axis=1)))]
+                c = cell_of_seed[nearest]
+                if abs(winding_number(points, cells[c], q) - 1) < 1e-6:
+                    holding.append(region["label"])
+            self.assertLessEqual(len(holding), 1, q)
+            found += len(holding)
+        self.assertGreater(found, 10)
+        return out, report, grid
+
+    def test_several_materials(self):
+        # Walls between materials (edges of three and four faces), and nested shells.
+        self.check_materials("sandia_cube_test_02.obj")
+        self.check_materials("openmeeg_HeadNNb3.obj", "--interior", "lattice")
+
     def test_inputs_it_cannot_clip_are_refused(self):
-        r = run("mesh", os.path.join(MODELS, "sandia_cube_test_02.obj"), "-o", os.path.join(self.dir, "m"),
-                "--method", "clipped")
-        self.assertEqual(r.returncode, 2, r.stderr)
-        self.assertIn("one material", r.stderr)
         r = run("mesh", os.path.join(MODELS, "gmsh_terrain.stl"), "-o", os.path.join(self.dir, "t"),
                 "--method", "clipped")
         self.assertEqual(r.returncode, 4, r.stderr)
         self.assertIn("open sheet", r.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.dir, "t", "mesh.vtu")))
+
+
+def polyhedron_volume(points, faces):
+    """A closed polyhedron's volume, by the divergence theorem over its faces' fans (cells need
+    not be convex)."""
+    total = 0.0
+    for f in faces:
+        p = points[list(f)]
+        total += numpy.einsum("ij,ij->", numpy.broadcast_to(p[0], p[1:-1].shape), numpy.cross(p[1:-1], p[2:]))
+    return total / 6
+
+
+def winding_number(points, faces, q):
+    """The solid angle of a closed polyhedron about q over 4 pi: 1 inside, 0 outside."""
+    total = 0.0
+    for f in faces:
+        a = points[f[0]] - q
+        for k in range(1, len(f) - 1):
+            b, d = points[f[k]] - q, points[f[k + 1]] - q
+            la, lb, ld = numpy.linalg.norm(a), numpy.linalg.norm(b), numpy.linalg.norm(d)
+            total += 2 * numpy.arctan2(a.dot(numpy.cross(b, d)),
+                                       la * lb * ld + a.dot(b) * ld + a.dot(d) * lb + b.dot(d) * la)
+    return total / (4 * numpy.pi)
 
 
 if __name__ == "__main__":

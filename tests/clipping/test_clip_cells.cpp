@@ -4,6 +4,7 @@
 // nearest seed (by each cell's winding number about the point).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -164,7 +165,7 @@ TEST(ClipCells, CubeCellsAddUpToTheCube) {
   const std::vector<Seed> seeds = seeds_in(d, 300, 1.0, 3);
   const VoronoiMesh voronoi = compute_cells(seeds);
   ClippingStats stats;
-  const VoronoiMesh clipped = clipping::clip_cells(voronoi, d.surface, 1, &stats);
+  const VoronoiMesh clipped = clipping::clip_cells(voronoi, d.surface, &stats);
   ASSERT_EQ(clipped.cells.size(), 300u);
   expect_clipped(d, seeds, clipped);
   EXPECT_GT(stats.clipped_cells, 100u);
@@ -196,7 +197,7 @@ TEST(ClipCells, CellsAboutACavityAreNotConvexAndStillAddUp) {
   const Domain d = box_domain(Point::Zero(), Point(2, 1, 1), Point(0.7, 0.3, 0.35), Point(1.3, 0.7, 0.65));
   const std::vector<Seed> seeds = seeds_in(d, 500, 1.5, 5);
   ClippingStats stats;
-  const VoronoiMesh clipped = clipping::clip_cells(compute_cells(seeds), d.surface, 1, &stats);
+  const VoronoiMesh clipped = clipping::clip_cells(compute_cells(seeds), d.surface, &stats);
   expect_clipped(d, seeds, clipped);
   // The cavity's corners poke through faces: their parts have holes, cut out.
   EXPECT_GT(stats.holes, 0u);
@@ -205,11 +206,89 @@ TEST(ClipCells, CellsAboutACavityAreNotConvexAndStillAddUp) {
 TEST(ClipCells, IsTheSameOnEveryRun) {
   const Domain d = box_domain(Point::Zero(), Point::Ones());
   const std::vector<Seed> seeds = seeds_in(d, 200, 1.0, 9);
-  const VoronoiMesh a = clipping::clip_cells(compute_cells(seeds), d.surface, 1);
-  const VoronoiMesh b = clipping::clip_cells(compute_cells(seeds), d.surface, 1);
+  const VoronoiMesh a = clipping::clip_cells(compute_cells(seeds), d.surface);
+  const VoronoiMesh b = clipping::clip_cells(compute_cells(seeds), d.surface);
   ASSERT_EQ(a.points, b.points);
   ASSERT_EQ(a.faces.size(), b.faces.size());
   for (std::size_t f = 0; f < a.faces.size(); ++f) EXPECT_EQ(a.faces[f].points, b.faces[f].points);
+}
+
+// Two unit cubes side by side, x < 1 one material and x > 1 another: their common side is an
+// interface, cut by both materials' cells.
+TEST(ClipCells, TwoMaterialsMeetOnTheirInterface) {
+  test::SurfaceBuilder b;
+  b.box(Point::Zero(), Point::Ones(), /*skip_high_x=*/true);
+  b.box(Point(1, 0, 0), Point(2, 1, 1));
+  SurfaceMesh surface = b.mesh;
+  label_regions(surface);
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Seed> seeds;
+  std::array<std::int32_t, 2> material{};
+  for (int side = 0; side < 2; ++side) {
+    // The regions' labels, from the side of the wall each region's faces face.
+    for (std::size_t t = 0; t < surface.num_faces(); ++t) {
+      const Triangle& tri = surface.triangles[t];
+      const Point c = (surface.vertices[tri[0]] + surface.vertices[tri[1]] + surface.vertices[tri[2]]) / 3;
+      if (std::abs(c.x() - 1) < 1e-12) continue;
+      const bool left = c.x() < 1;
+      if (left == (side == 0)) material[side] = std::max(surface.face_regions[t].back, surface.face_regions[t].front);
+    }
+    for (int k = 0; k < 150; ++k) {
+      seeds.push_back({Point(side + u(random), u(random), u(random)), material[side], 0, SeedKind::Interior});
+    }
+  }
+  ASSERT_NE(material[0], material[1]);
+  ASSERT_GT(material[0], 0);
+  ASSERT_GT(material[1], 0);
+  const std::size_t materials_end = seeds.size();
+  const Domain far = box_domain(Point(-1, -1, -1), Point(3, 2, 2));
+  for (const Seed& s : seeds_in(far, 0, 0, 1)) seeds.push_back(s);
+  ClippingStats stats;
+  const VoronoiMesh m = clipping::clip_cells(clipping::material_diagrams(seeds, materials_end), surface, &stats);
+  ASSERT_EQ(m.cells.size(), materials_end);
+  expect_closed(m);
+  std::map<std::int32_t, double> volume;
+  for (const VoronoiCell& c : m.cells) volume[c.region] += c.volume;
+  EXPECT_NEAR(volume[material[0]], 1, 1e-12);
+  EXPECT_NEAR(volume[material[1]], 1, 1e-12);
+  double wall = 0, outer = 0;
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    const VoronoiFace& face = m.faces[f];
+    const double area = face_geometry(m, f).area;
+    if (face.neighbour == kNoCell) {
+      outer += area;
+      continue;
+    }
+    const std::int32_t a = m.cells[face.owner].region, c = m.cells[face.neighbour].region;
+    EXPECT_EQ(face.regions.back, a);
+    EXPECT_EQ(face.regions.front, c);
+    if (a == c) {
+      // Faces within a material stay on their seeds' bisector.
+      for (Index p : face.points) {
+        const Point& x = m.points[p];
+        EXPECT_NEAR((x - seeds[face.owner_seed].position).norm(), (x - seeds[face.neighbour_seed].position).norm(),
+                    1e-9);
+      }
+      continue;
+    }
+    wall += area;
+    for (Index p : face.points) EXPECT_NEAR(m.points[p].x(), 1, 1e-12);
+  }
+  EXPECT_NEAR(wall, 1, 1e-12);
+  EXPECT_NEAR(outer, 10, 1e-11);
+  EXPECT_GT(stats.surface_pieces, 0u);
+  // Random points lie in the cell of their material's nearest seed.
+  for (int trial = 0; trial < 200; ++trial) {
+    const Point q(2 * u(random), u(random), u(random));
+    const std::int32_t own = material[q.x() < 1 ? 0 : 1];
+    std::size_t nearest = m.cells.size();
+    for (std::size_t c = 0; c < m.cells.size(); ++c) {
+      if (m.cells[c].region != own) continue;
+      if (nearest == m.cells.size() || (m.cells[c].site - q).norm() < (m.cells[nearest].site - q).norm()) nearest = c;
+    }
+    EXPECT_NEAR(winding_number(m, nearest, q), 1, 1e-6) << "point " << q.transpose();
+  }
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 // output_dir is empty), and is measured by measure_method_figures against the volume the input
 // encloses; job.output_dir gets compare.json (the figures) and compare.svg (each method's
 // histogram of its boundary faces' shortest over longest edge). Throws what run_job throws; the
-// clipped run's refusals (one material only) included.
+// clipped run's refusals (open sheets) included.
 //
 // comparison_table(comparison) is the table the front ends print: a row per figure, a column
 // per method.

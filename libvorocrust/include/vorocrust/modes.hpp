@@ -39,9 +39,9 @@ enum class SelfIntersections { Resolve, Refuse, Keep };
 // - Vorocrust: the paper's method: seeds in pairs about the surface, every cell a whole Voronoi
 //   cell, convex, the surface made of Voronoi faces that approximate the input;
 // - Clipped: seeds inside the volume only (Ebeida and Mitchell's maximal Poisson-disk seeds, or
-//   Yan et al.'s CVT), each Voronoi cell cut to the input: the boundary is the input exactly,
-//   volumes are exact, and the cells the surface cuts are no longer Voronoi cells (not convex in
-//   general, their boundary faces not orthogonal to anything).
+//   Yan et al.'s CVT), each material's Voronoi cells cut to its region: the boundary and the
+//   interfaces are the input exactly, volumes are exact, and the cells the surface cuts are no
+//   longer Voronoi cells (not convex in general, their faces on the surface orthogonal to nothing).
 enum class Method { Vorocrust, Clipped };
 
 template <class Enum>

@@ -12,6 +12,7 @@
 #include <set>
 #include <span>
 #include <string>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -31,12 +32,14 @@ namespace {
 using CellId = std::uint32_t;
 
 // What defines a point of the clipped mesh: equal keys are one point, computed one way.
-enum class KeyKind : std::uint8_t { InputVertex, EdgeCut, TriangleCut };
+enum class KeyKind : std::uint8_t { InputVertex, EdgeCut, TriangleCut, InterfaceCut };
 struct Key {
   KeyKind kind = KeyKind::InputVertex;
   // InputVertex: v. EdgeCut: the edge's vertices u < w, the bisector's cells c < d.
   // TriangleCut: the triangle, the three cells c < d < e whose Voronoi edge meets it.
-  std::array<std::uint32_t, 4> ids{};
+  // InterfaceCut: a triangle between two materials, a bisector of each material's cells (c < d,
+  // e < f, (c, d) < (e, f)) that cross in it.
+  std::array<std::uint32_t, 5> ids{};
   auto operator<=>(const Key&) const = default;
 };
 
@@ -54,11 +57,17 @@ struct Corner {
 };
 using Polygon = std::vector<Corner>;
 
-// A part of an input triangle in one cell, in the triangle's vertex order.
+constexpr CellId kNoneAcross = ~CellId{0};
+
+// A part of an input triangle in one cell, in the triangle's vertex order. On a triangle between
+// two materials, the part is in one cell of each (`across`, the other material's) and comes
+// twice, once for each cell; the second copy is the `mirror`.
 struct Piece {
   std::uint32_t triangle = 0;
   CellId cell = 0;
   Polygon corners;
+  CellId across = kNoneAcross;
+  bool mirror = false;
 };
 
 // A point of the surface on a Voronoi edge: where the edge of three cells crosses a triangle.
@@ -76,10 +85,12 @@ std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
 // The surface's restricted Voronoi diagram: each boundary triangle cut by the cells it meets,
 // found by walking from the cell of its centroid across the bisectors that cut it (Yan et al.
 // 4.1). A point's side of a bisector is computed from the point's key alone, so a part of an
-// input edge is cut the same way in both its triangles.
+// input edge is cut the same way in both its triangles. Each material has its own diagram; a
+// triangle between two materials is cut by the first material's cells, then each part by the
+// second's: the interface's faces are the overlay of both diagrams, one face per pair of cells.
 class RestrictedCells {
  public:
-  RestrictedCells(const VoronoiMesh& voronoi, const SurfaceMesh& domain) : domain_(domain), cloud_{&sites_} {
+  RestrictedCells(const VoronoiMesh& voronoi, const SurfaceMesh& domain) : domain_(domain) {
     sites_.reserve(voronoi.cells.size());
     for (const VoronoiCell& c : voronoi.cells) sites_.push_back(c.site);
     neighbours_.resize(voronoi.cells.size());
@@ -91,34 +102,41 @@ class RestrictedCells {
     // One order of the bisectors for every triangle: a part of an input edge is then cut by
     // the same planes in the same order in both triangles that share it.
     for (std::vector<CellId>& n : neighbours_) std::sort(n.begin(), n.end());
-    tree_ = std::make_unique<Tree>(3, cloud_, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    for (CellId c = 0; c < voronoi.cells.size(); ++c) {
+      std::unique_ptr<Diagram>& d = diagrams_[voronoi.cells[c].region];
+      if (!d) d = std::make_unique<Diagram>();
+      d->cells.push_back(c);
+      d->sites.push_back(sites_[c]);
+    }
+    for (auto& [material, d] : diagrams_) {
+      d->cloud.items = &d->sites;
+      d->tree = std::make_unique<Tree>(3, d->cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+    }
   }
+
+  bool meshes(std::int32_t region) const { return diagrams_.count(region) > 0; }
 
   std::vector<Piece> pieces(std::uint32_t t) const {
     const Triangle& tri = domain_.triangles[t];
     Polygon triangle(3);
     for (int k = 0; k < 3; ++k) {
       const Index u = tri[k], w = tri[(k + 1) % 3];
-      triangle[k] = {Key{KeyKind::InputVertex, {u, 0, 0, 0}}, domain_.vertices[u],
+      triangle[k] = {Key{KeyKind::InputVertex, {u, 0, 0, 0, 0}}, domain_.vertices[u],
                      Support{false, std::min(u, w), std::max(u, w)}};
     }
-    const Point centroid = (triangle[0].p + triangle[1].p + triangle[2].p) / 3;
-    std::vector<CellId> visited{nearest_cell(centroid)};
+    const RegionPair& sides = domain_.face_regions[t];
+    std::int32_t first = std::min(sides.back, sides.front), second = std::max(sides.back, sides.front);
+    if (!meshes(first)) std::swap(first, second);
     std::vector<Piece> result;
-    for (std::size_t q = 0; q < visited.size(); ++q) {
-      const CellId c = visited[q];
-      Polygon polygon = triangle;
-      for (CellId x : neighbours_[c]) {
-        polygon = clip(polygon, c, x, t);
-        if (polygon.empty()) break;
+    for (auto& [cell, polygon] : walk(t, triangle, first)) {
+      if (!meshes(second)) {
+        result.push_back({t, cell, std::move(polygon)});
+        continue;
       }
-      if (polygon.empty()) continue;
-      for (const Corner& k : polygon) {
-        if (k.out.bisector && std::find(visited.begin(), visited.end(), k.out.b) == visited.end()) {
-          visited.push_back(k.out.b);
-        }
+      for (auto& [other, part] : walk(t, polygon, second)) {
+        result.push_back({t, cell, part, other, false});
+        result.push_back({t, other, std::move(part), cell, true});
       }
-      result.push_back({t, c, std::move(polygon)});
     }
     return result;
   }
@@ -126,12 +144,39 @@ class RestrictedCells {
  private:
   using Cloud = PointCloudAdaptor<Point, IdentityPosition>;
   using Tree = StaticKdTree<Cloud>;
+  struct Diagram {
+    std::vector<CellId> cells;
+    std::vector<Point> sites;
+    Cloud cloud;
+    std::unique_ptr<Tree> tree;
+  };
 
-  CellId nearest_cell(const Point& p) const {
+  // The parts of the convex polygon `start`, in triangle t, in each cell of `material` it meets.
+  std::vector<std::pair<CellId, Polygon>> walk(std::uint32_t t, const Polygon& start, std::int32_t material) const {
+    Point centre = Point::Zero();
+    for (const Corner& k : start) centre += k.p;
+    const Diagram& d = *diagrams_.at(material);
     std::uint32_t index = 0;
     double squared = 0;
-    tree_->knnSearch(p.data(), 1, &index, &squared);
-    return index;
+    d.tree->knnSearch(Point(centre / static_cast<double>(start.size())).data(), 1, &index, &squared);
+    std::vector<CellId> visited{d.cells[index]};
+    std::vector<std::pair<CellId, Polygon>> result;
+    for (std::size_t q = 0; q < visited.size(); ++q) {
+      const CellId c = visited[q];
+      Polygon polygon = start;
+      for (CellId x : neighbours_[c]) {
+        polygon = clip(polygon, c, x, t);
+        if (polygon.empty()) break;
+      }
+      if (polygon.empty()) continue;
+      for (const Corner& k : polygon) {
+        if (k.out.bisector && k.out.a == c && std::find(visited.begin(), visited.end(), k.out.b) == visited.end()) {
+          visited.push_back(k.out.b);
+        }
+      }
+      result.emplace_back(c, std::move(polygon));
+    }
+    return result;
   }
 
   // Positive where p is nearer cell hi's seed than cell lo's (lo < hi).
@@ -143,10 +188,16 @@ class RestrictedCells {
 
   static bool on_bisector(const Key& key, CellId c, CellId x) {
     const CellId lo = std::min(c, x), hi = std::max(c, x);
-    if (key.kind == KeyKind::EdgeCut) return key.ids[2] == lo && key.ids[3] == hi;
-    if (key.kind != KeyKind::TriangleCut) return false;
-    const auto has = [&](CellId k) { return key.ids[1] == k || key.ids[2] == k || key.ids[3] == k; };
-    return has(lo) && has(hi);
+    switch (key.kind) {
+      case KeyKind::EdgeCut: return key.ids[2] == lo && key.ids[3] == hi;
+      case KeyKind::TriangleCut: {
+        const auto has = [&](CellId k) { return key.ids[1] == k || key.ids[2] == k || key.ids[3] == k; };
+        return has(lo) && has(hi);
+      }
+      case KeyKind::InterfaceCut:
+        return (key.ids[1] == lo && key.ids[2] == hi) || (key.ids[3] == lo && key.ids[4] == hi);
+      default: return false;
+    }
   }
 
   // -1: nearer c's seed; 1: nearer x's; 0: on their bisector, by definition or exactly.
@@ -164,29 +215,35 @@ class RestrictedCells {
     return pu + lambda * (pw - pu);
   }
 
-  Point triangle_cut(std::uint32_t t, const std::array<CellId, 3>& cells) const {
+  // Where triangle t's plane meets the bisectors of cells a, b and of cells c, d.
+  Point triangle_cut(std::uint32_t t, CellId a, CellId b, CellId c, CellId d) const {
     const Triangle& tri = domain_.triangles[t];
     const Point& o = domain_.vertices[tri[0]];
-    const Point& a = sites_[cells[0]];
-    const Point& b = sites_[cells[1]];
-    const Point& c = sites_[cells[2]];
+    const Point ab = sites_[b] - sites_[a], cd = sites_[d] - sites_[c];
     Eigen::Matrix3d m;
     m.row(0) = (domain_.vertices[tri[1]] - o).cross(domain_.vertices[tri[2]] - o).transpose();
-    m.row(1) = (b - a).transpose();
-    m.row(2) = (c - a).transpose();
-    const Eigen::Vector3d rhs(0, (b - a).dot((a + b) / 2 - o), (c - a).dot((a + c) / 2 - o));
+    m.row(1) = ab.transpose();
+    m.row(2) = cd.transpose();
+    const Eigen::Vector3d rhs(0, ab.dot((sites_[a] + sites_[b]) / 2 - o), cd.dot((sites_[c] + sites_[d]) / 2 - o));
     return o + m.fullPivLu().solve(rhs);
   }
 
-  // Where the edge leaving `a` meets the bisector of c and x.
+  // Where the edge leaving `a` meets the bisector of c and x: on an input edge, on a bisector of
+  // c's own diagram, or on one of the other material's.
   Corner cut(const Corner& a, CellId c, CellId x, std::uint32_t t) const {
     const CellId lo = std::min(c, x), hi = std::max(c, x);
     if (!a.out.bisector) {
-      return {Key{KeyKind::EdgeCut, {a.out.a, a.out.b, lo, hi}}, edge_cut(a.out.a, a.out.b, lo, hi), a.out};
+      return {Key{KeyKind::EdgeCut, {a.out.a, a.out.b, lo, hi, 0}}, edge_cut(a.out.a, a.out.b, lo, hi), a.out};
+    }
+    if (a.out.a != c) {
+      std::array<CellId, 2> p{std::min(a.out.a, a.out.b), std::max(a.out.a, a.out.b)}, q{lo, hi};
+      if (q < p) std::swap(p, q);
+      return {Key{KeyKind::InterfaceCut, {t, p[0], p[1], q[0], q[1]}}, triangle_cut(t, p[0], p[1], q[0], q[1]), a.out};
     }
     std::array<CellId, 3> cells{a.out.a, a.out.b, x};
     std::sort(cells.begin(), cells.end());
-    return {Key{KeyKind::TriangleCut, {t, cells[0], cells[1], cells[2]}}, triangle_cut(t, cells), a.out};
+    return {Key{KeyKind::TriangleCut, {t, cells[0], cells[1], cells[2], 0}},
+            triangle_cut(t, cells[0], cells[1], cells[0], cells[2]), a.out};
   }
 
   // Sutherland-Hodgman: the part of `polygon` nearer c's seed than x's.
@@ -239,13 +296,12 @@ class RestrictedCells {
 
   const SurfaceMesh& domain_;
   std::vector<Point> sites_;
-  Cloud cloud_;
-  std::unique_ptr<Tree> tree_;
+  std::map<std::int32_t, std::unique_ptr<Diagram>> diagrams_;
   std::vector<std::vector<CellId>> neighbours_;
 };
 
 // Whether a triangle's pieces make up its whole area (to 1e-9): no part of it lies in a cell the
-// walk over material cells cannot reach.
+// walk over material cells cannot reach (on an interface, in either material's diagram).
 bool covered(const SurfaceMesh& domain, std::uint32_t t, const std::vector<Piece>& pieces) {
   const auto area = [](const Point& normal, const auto& points) {
     Point sum = Point::Zero();
@@ -257,6 +313,7 @@ bool covered(const SurfaceMesh& domain, std::uint32_t t, const std::vector<Piece
   const Point normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
   double parts = 0;
   for (const Piece& piece : pieces) {
+    if (piece.mirror) continue;
     std::vector<Point> points;
     for (const Corner& k : piece.corners) points.push_back(k.p - corners[0]);
     parts += area(normal, points);
@@ -268,14 +325,64 @@ bool covered(const SurfaceMesh& domain, std::uint32_t t, const std::vector<Piece
   return std::abs(parts - whole) <= 1e-9 * whole + 1e-12 * longest;
 }
 
+// Where an interface meets the rest of the surface, an input edge is cut by both materials'
+// bisectors on the interface's side and by one material's on the other: every piece's part of an
+// input edge gets every cut on it, so that the faces along the edge share their points.
+void insert_edge_cuts(const SurfaceMesh& domain, std::vector<Piece>& pieces) {
+  std::unordered_map<std::uint64_t, std::vector<std::pair<double, Corner>>> cuts;
+  const auto along = [&](std::uint32_t u, std::uint32_t w, const Point& p) {
+    return (p - domain.vertices[u]).dot(domain.vertices[w] - domain.vertices[u]);
+  };
+  for (const Piece& piece : pieces) {
+    for (const Corner& k : piece.corners) {
+      if (k.key.kind == KeyKind::EdgeCut) {
+        cuts[pair_key(k.key.ids[0], k.key.ids[1])].emplace_back(along(k.key.ids[0], k.key.ids[1], k.p), k);
+      }
+    }
+  }
+  for (auto& [edge, on_edge] : cuts) {
+    std::sort(on_edge.begin(), on_edge.end(), [](const auto& x, const auto& y) {
+      return std::pair(x.first, x.second.key) < std::pair(y.first, y.second.key);
+    });
+    on_edge.erase(std::unique(on_edge.begin(), on_edge.end(),
+                              [](const auto& x, const auto& y) { return x.second.key == y.second.key; }),
+                  on_edge.end());
+  }
+  for (Piece& piece : pieces) {
+    Polygon polygon;
+    const std::size_t n = piece.corners.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Corner& a = piece.corners[k];
+      const Corner& b = piece.corners[(k + 1) % n];
+      polygon.push_back(a);
+      if (a.out.bisector) continue;
+      const auto it = cuts.find(pair_key(a.out.a, a.out.b));
+      if (it == cuts.end()) continue;
+      const double from = along(a.out.a, a.out.b, a.p), to = along(a.out.a, a.out.b, b.p);
+      const auto between = [&](const std::pair<double, Corner>& c) {
+        return std::min(from, to) < c.first && c.first < std::max(from, to) && c.second.key != a.key &&
+               c.second.key != b.key;
+      };
+      const auto insert = [&](const std::pair<double, Corner>& c) {
+        if (between(c)) polygon.push_back({c.second.key, c.second.p, a.out});
+      };
+      if (from < to) {
+        std::for_each(it->second.begin(), it->second.end(), insert);
+      } else {
+        std::for_each(it->second.rbegin(), it->second.rend(), insert);
+      }
+    }
+    piece.corners = std::move(polygon);
+  }
+}
+
 enum class Side : std::int8_t { Unknown, Inside, Outside };
 
 // The clipped mesh, assembled from the pieces: every face between cells cut along the surface's
 // trace on it, every piece a boundary face of its cell.
 class Assembly {
  public:
-  Assembly(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material)
-      : voronoi_(voronoi), domain_(domain), material_(material) {}
+  Assembly(const VoronoiMesh& voronoi, const SurfaceMesh& domain) : voronoi_(voronoi), domain_(domain) {}
 
   VoronoiMesh run(std::vector<Piece> pieces, ClippingStats& stats) {
     number_points(pieces);
@@ -287,7 +394,7 @@ class Assembly {
     out.points = voronoi_.points;
     out.points.insert(out.points.end(), new_points_.begin(), new_points_.end());
     std::sort(pieces.begin(), pieces.end(), [](const Piece& a, const Piece& b) {
-      return std::pair(a.cell, a.triangle) < std::pair(b.cell, b.triangle);
+      return std::tuple(a.cell, a.triangle, a.across) < std::tuple(b.cell, b.triangle, b.across);
     });
     // Each cell's faces (those it owns, then its pieces of the surface) on all threads, then
     // concatenated in cell order: the mesh does not depend on the threads.
@@ -346,14 +453,16 @@ class Assembly {
   }
 
  private:
-  // Whether the triangle's normal (right-hand rule) points out of the material.
-  bool faces_out(std::uint32_t t) const { return domain_.face_regions[t].back == material_; }
+  std::int32_t material_of(CellId c) const { return voronoi_.cells[c].region; }
 
-  Point outward_normal(std::uint32_t t) const {
+  // Whether the triangle's normal (right-hand rule) points out of the material.
+  bool faces_out(std::uint32_t t, std::int32_t material) const { return domain_.face_regions[t].back == material; }
+
+  Point outward_normal(std::uint32_t t, std::int32_t material) const {
     const Triangle& tri = domain_.triangles[t];
     const Point n = (domain_.vertices[tri[1]] - domain_.vertices[tri[0]])
                         .cross(domain_.vertices[tri[2]] - domain_.vertices[tri[0]]);
-    return faces_out(t) ? n : Point(-n);
+    return faces_out(t, material) ? n : Point(-n);
   }
 
   // The new points, after the Voronoi vertices, in the order of their keys.
@@ -479,7 +588,8 @@ class Assembly {
       const Point d = point(b) - point(a);
       bool exits = false;
       for (std::size_t k = 0; k < it->second.size(); ++k) {
-        const bool out = outward_normal(it->second[k].triangle).dot(d) > 0;
+        const Crossing& crossing = it->second[k];
+        const bool out = outward_normal(crossing.triangle, material_of(crossing.cells[0])).dot(d) > 0;
         if (k > 0 && out == exits) {
           throw Error(Error::Kind::Internal, c_format("the surface enters a Voronoi edge twice in a row near %s",
                                                       describe_point(point(it->second[k].point)).c_str()));
@@ -506,9 +616,13 @@ class Assembly {
     // No crossing at all (the surface inside one cell): a ray decides.
     if (std::find(side_.begin(), side_.end(), Side::Unknown) == side_.end()) return;
     const RegionLocator locate(domain_);
+    std::vector<std::int32_t> material(n, kNoCell);
+    for (const VoronoiFace& f : voronoi_.faces) {
+      for (Index p : f.points) material[p] = material_of(static_cast<CellId>(f.owner));
+    }
     for (Index p = 0; p < n; ++p) {
       if (side_[p] == Side::Unknown) {
-        side_[p] = locate.region_of(point(p)) == material_ ? Side::Inside : Side::Outside;
+        side_[p] = locate.region_of(point(p)) == material[p] ? Side::Inside : Side::Outside;
       }
     }
   }
@@ -533,7 +647,7 @@ class Assembly {
         Index from = point_of(a.key), to = point_of(piece.corners[(k + 1) % n].key);
         // The piece runs about the surface's outward normal; the face, about the normal out of
         // its owner, meets it along this edge in the other direction.
-        if (faces_out(piece.triangle)) std::swap(from, to);
+        if (faces_out(piece.triangle, material_of(piece.cell))) std::swap(from, to);
         traces_[it->second].emplace_back(from, to);
       }
     }
@@ -645,22 +759,31 @@ class Assembly {
     std::vector<Index> polygon;
     polygon.reserve(piece.corners.size());
     for (const Corner& k : piece.corners) polygon.push_back(point_of(k.key));
-    if (!faces_out(piece.triangle)) std::reverse(polygon.begin(), polygon.end());
+    if (!faces_out(piece.triangle, material_of(piece.cell))) std::reverse(polygon.begin(), polygon.end());
     return polygon;
   }
 
-  Point unit_normal(std::uint32_t t) const { return outward_normal(t).normalized(); }
+  Point unit_normal(const Piece& p) const { return outward_normal(p.triangle, material_of(p.cell)).normalized(); }
 
   // Two pieces of one cell side by side lie in one plane of one part of the input: triangles of
-  // one group, with the same regions, whose normals agree to 1e-12.
-  bool flat_together(std::uint32_t s, std::uint32_t t) const {
-    return domain_.face_group[s] == domain_.face_group[t] && domain_.face_regions[s] == domain_.face_regions[t] &&
-           unit_normal(s).dot(unit_normal(t)) > 1 - 1e-12;
+  // one group, with the same regions, whose normals differ by less than 1e-12 radians, and the
+  // same cell across. A looser bound would join a scan's nearly flat triangles into faces that
+  // leave the input (by the angle times the face's size), and their volume with it.
+  bool flat_together(const Piece& p, const Piece& q) const {
+    const std::uint32_t s = p.triangle, t = q.triangle;
+    const Point a = unit_normal(p), b = unit_normal(q);
+    return p.across == q.across && domain_.face_group[s] == domain_.face_group[t] &&
+           domain_.face_regions[s] == domain_.face_regions[t] && a.dot(b) > 0 && a.cross(b).norm() < 1e-12;
   }
 
-  // A cell's boundary faces: its pieces, those side by side in one plane joined into one face, so
-  // that a flat side of a CAD model that crosses a cell is one face of it, not one per triangle.
-  void emit_surface(std::span<const Piece> pieces, std::vector<VoronoiFace>& out, ClippingStats& stats) const {
+  // A cell's faces on the surface: its pieces, those side by side in one plane joined into one
+  // face, so that a flat side of a CAD model that crosses a cell is one face of it, not one per
+  // triangle. A piece on an interface is a face toward the cell across, listed by the lower cell.
+  void emit_surface(std::span<const Piece> all, std::vector<VoronoiFace>& out, ClippingStats& stats) const {
+    std::vector<Piece> pieces;
+    for (const Piece& p : all) {
+      if (p.across == kNoneAcross || p.cell < p.across) pieces.push_back(p);
+    }
     stats.surface_pieces += pieces.size();
     std::vector<std::vector<Index>> polygons;
     for (const Piece& p : pieces) polygons.push_back(outward_polygon(p));
@@ -673,7 +796,7 @@ class Assembly {
     UnionFind together(polygons.size());
     for (const auto& [edge, i] : edge_of) {
       const auto twin = edge_of.find({edge.second, edge.first});
-      if (twin != edge_of.end() && flat_together(pieces[i].triangle, pieces[twin->second].triangle)) {
+      if (twin != edge_of.end() && flat_together(pieces[i], pieces[twin->second])) {
         together.unite(i, twin->second);
       }
     }
@@ -681,17 +804,23 @@ class Assembly {
     for (std::uint32_t i = 0; i < polygons.size(); ++i) groups[together.find(i)].push_back(i);
     for (const auto& [root, members] : groups) {
       std::vector<std::vector<Index>> faces;
-      if (members.size() > 1) faces = joined(polygons, members, unit_normal(pieces[root].triangle));
+      if (members.size() > 1) faces = joined(polygons, members, unit_normal(pieces[root]));
       if (faces.empty()) {
         for (std::uint32_t i : members) faces.push_back(polygons[i]);
       }
       for (std::vector<Index>& f : faces) {
         VoronoiFace face;
         face.points = std::move(f);
-        face.owner = static_cast<std::int32_t>(pieces[root].cell);
-        face.owner_seed = face.neighbour_seed = voronoi_.cells[pieces[root].cell].seed;
-        const RegionPair& sides = domain_.face_regions[pieces[root].triangle];
-        face.regions = {material_, sides.back == material_ ? sides.front : sides.back};
+        const Piece& piece = pieces[root];
+        const std::int32_t material = material_of(piece.cell);
+        face.owner = static_cast<std::int32_t>(piece.cell);
+        face.owner_seed = face.neighbour_seed = voronoi_.cells[piece.cell].seed;
+        if (piece.across != kNoneAcross) {
+          face.neighbour = static_cast<std::int32_t>(piece.across);
+          face.neighbour_seed = voronoi_.cells[piece.across].seed;
+        }
+        const RegionPair& sides = domain_.face_regions[piece.triangle];
+        face.regions = {material, sides.back == material ? sides.front : sides.back};
         out.push_back(std::move(face));
       }
     }
@@ -732,7 +861,6 @@ class Assembly {
 
   const VoronoiMesh& voronoi_;
   const SurfaceMesh& domain_;
-  std::int32_t material_;
   std::vector<std::pair<Key, Point>> keys_;
   std::vector<Point> new_points_;
   std::vector<Crossing> crossings_;
@@ -745,17 +873,55 @@ class Assembly {
 
 }  // namespace
 
-VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, std::int32_t material,
-                       ClippingStats* stats) {
+VoronoiMesh material_diagrams(const std::vector<Seed>& seeds, std::size_t materials_end, int threads) {
+  VoronoiMesh all;
+  const std::vector<Seed> outside(seeds.begin() + static_cast<std::ptrdiff_t>(materials_end), seeds.end());
+  for (std::size_t first = 0; first < materials_end;) {
+    const std::int32_t material = seeds[first].region;
+    std::size_t end = first;
+    while (end < materials_end && seeds[end].region == material) ++end;
+    std::vector<Seed> own(seeds.begin() + static_cast<std::ptrdiff_t>(first),
+                          seeds.begin() + static_cast<std::ptrdiff_t>(end));
+    own.insert(own.end(), outside.begin(), outside.end());
+    const VoronoiMesh diagram = compute_cells(own, {.materials = {material}, .threads = threads});
+    const auto seed_of = [&](Index s) {
+      return static_cast<Index>(s < end - first ? first + s : materials_end + (s - (end - first)));
+    };
+    const auto cell_of = [&](std::int32_t c) { return c == kNoCell ? c : static_cast<std::int32_t>(first) + c; };
+    const auto point_base = static_cast<Index>(all.points.size());
+    const auto face_base = static_cast<Index>(all.faces.size());
+    all.points.insert(all.points.end(), diagram.points.begin(), diagram.points.end());
+    for (VoronoiFace f : diagram.faces) {
+      for (Index& p : f.points) p += point_base;
+      f.owner = cell_of(f.owner);
+      f.neighbour = cell_of(f.neighbour);
+      f.owner_seed = seed_of(f.owner_seed);
+      f.neighbour_seed = seed_of(f.neighbour_seed);
+      all.faces.push_back(std::move(f));
+    }
+    for (VoronoiCell c : diagram.cells) {
+      c.seed = seed_of(c.seed);
+      for (Index& f : c.faces) f += face_base;
+      all.cells.push_back(std::move(c));
+    }
+    first = end;
+  }
+  return all;
+}
+
+VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, ClippingStats* stats) {
   if (!domain.has_regions()) {
     throw Error(Error::Kind::Internal, "clip_cells needs the domain's regions (label_regions)");
   }
+  const RestrictedCells restricted(voronoi, domain);
   std::vector<std::uint32_t> boundary;
+  bool interfaces = false;
   for (std::uint32_t t = 0; t < domain.num_faces(); ++t) {
     const RegionPair& r = domain.face_regions[t];
-    if ((r.back == material) != (r.front == material)) boundary.push_back(t);
+    if (r.back == r.front || !(restricted.meshes(r.back) || restricted.meshes(r.front))) continue;
+    boundary.push_back(t);
+    interfaces |= restricted.meshes(r.back) && restricted.meshes(r.front);
   }
-  const RestrictedCells restricted(voronoi, domain);
   std::vector<std::vector<Piece>> per_triangle(boundary.size());
   tbb::parallel_for(std::size_t{0}, boundary.size(),
                     [&](std::size_t i) { per_triangle[i] = restricted.pieces(boundary[i]); });
@@ -770,7 +936,8 @@ VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, st
     std::move(p.begin(), p.end(), std::back_inserter(pieces));
     p = {};
   }
-  return Assembly(voronoi, domain, material).run(std::move(pieces), figures);
+  if (interfaces) insert_edge_cuts(domain, pieces);
+  return Assembly(voronoi, domain).run(std::move(pieces), figures);
 }
 
 }  // namespace vorocrust::clipping

@@ -1,8 +1,11 @@
 #include "clipping/clipped_cells.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "clipping/poisson_disk_seeds.hpp"
+#include "core/c_format.hpp"
 #include "core/split_mix.hpp"
 #include "seeds/locate_regions.hpp"
 #include "vorocrust/cells.hpp"
@@ -18,7 +21,8 @@ namespace {
 // on a bisector, and faces of at most that size where the lattice had an edge.
 constexpr double kLatticeJitter = 1e-3;
 
-std::vector<Seed> lattice_seeds(const SurfaceMesh& domain, std::int32_t material, double spacing, std::uint64_t seed) {
+// The lattice's points inside the materials, each with its region.
+std::vector<Seed> lattice_seeds(const SurfaceMesh& domain, double spacing, std::uint64_t seed) {
   Eigen::AlignedBox3d box;
   for (const Point& p : domain.vertices) box.extend(p);
   const RegionLocator locate(domain);
@@ -34,15 +38,16 @@ std::vector<Seed> lattice_seeds(const SurfaceMesh& domain, std::int32_t material
             SplitMix64::stream(seed, static_cast<std::uint64_t>((z * (n.y() + 1) + y) * (n.x() + 1) + x));
         const Point jitter(random.unit() - 0.5, random.unit() - 0.5, random.unit() - 0.5);
         const Point p = lo + spacing * (Point(x, y, z) + 2 * kLatticeJitter * jitter);
-        if (locate.region_of(p) == material) seeds.push_back({p, material, spacing, SeedKind::Interior});
+        const std::int32_t region = locate.region_of(p);
+        if (region > 0) seeds.push_back({p, region, spacing, SeedKind::Interior});
       }
     }
   }
   return seeds;
 }
 
-// The Voronoi cells of the material seeds, bounded by outside seeds `margin` beyond the domain's
-// box, cut to the material. Outside seeds nearer a point of the surface than every material seed
+// The Voronoi cells of each material's seeds, bounded by outside seeds `margin` beyond the
+// domain's box, cut to the materials. Outside seeds nearer a point of the surface than every material seed
 // would take part of it from the cells (a lattice that misses a thin part, seeds Lloyd moved):
 // then the margin grows fourfold, up to the box's diagonal, beyond which no point of the box is
 // nearer an outside seed than any seed inside it.
@@ -52,8 +57,8 @@ struct Clipping {
   ClippingStats stats;
 };
 
-Clipping clip(const SurfaceMesh& domain, std::int32_t material, const std::vector<Seed>& seeds,
-              const ClippedOptions& options, Phases* phases) {
+Clipping clip(const SurfaceMesh& domain, const std::vector<Seed>& seeds, const ClippedOptions& options,
+              Phases* phases) {
   Eigen::AlignedBox3d box;
   for (const Point& p : domain.vertices) box.extend(p);
   const double diagonal = box.diagonal().norm();
@@ -62,8 +67,7 @@ Clipping clip(const SurfaceMesh& domain, std::int32_t material, const std::vecto
     c.seeds = seeds;
     for (Seed& s : outside_seeds(domain, margin, options.radius)) c.seeds.push_back(s);
     const auto cut = [&] {
-      const VoronoiMesh cells = compute_cells(c.seeds, {.materials = {material}, .threads = options.threads});
-      c.cells = clip_cells(cells, domain, material, &c.stats);
+      c.cells = clip_cells(material_diagrams(c.seeds, seeds.size(), options.threads), domain, &c.stats);
     };
     if (phases) {
       (*phases)("cells", cut);
@@ -79,27 +83,45 @@ Clipping clip(const SurfaceMesh& domain, std::int32_t material, const std::vecto
 
 }  // namespace
 
-ClippedMesh clipped_cells(const SurfaceMesh& domain, std::int32_t material, const ClippedOptions& options,
-                          Phases& phases) {
+ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& options, Phases& phases) {
+  std::int32_t materials = 0;
+  for (const RegionPair& r : domain.face_regions) materials = std::max({materials, r.back, r.front});
   std::vector<Seed> seeds = phases("interior seeds", [&] {
     const std::vector<Seed> lattice = options.mode == InteriorMode::Lattice
-                                          ? lattice_seeds(domain, material, options.radius, options.seed)
+                                          ? lattice_seeds(domain, options.radius, options.seed)
                                           : std::vector<Seed>{};
-    return poisson_disk_seeds(domain, material, options.radius, options.seed, lattice);
+    std::vector<Seed> all;
+    for (std::int32_t material = 1; material <= materials; ++material) {
+      std::vector<Seed> placed;
+      std::copy_if(lattice.begin(), lattice.end(), std::back_inserter(placed),
+                   [&](const Seed& s) { return s.region == material; });
+      // The first material draws from the run's seed itself, the others from streams of it.
+      const std::uint64_t stream = material == 1 ? options.seed : SplitMix64::stream(options.seed, material)();
+      for (Seed& s : poisson_disk_seeds(domain, material, options.radius, stream, placed)) all.push_back(s);
+    }
+    return all;
   });
+  for (std::int32_t material = 1; material <= materials; ++material) {
+    if (std::none_of(seeds.begin(), seeds.end(), [&](const Seed& s) { return s.region == material; })) {
+      throw Error(Error::Kind::InvalidGeometry,
+                  c_format("region %d is too thin for a seed %g apart from the others: lower `max_size`", material,
+                           options.radius),
+                  {.option = "max_size"});
+    }
+  }
   if (options.mode == InteriorMode::Cvt) {
     phases("cvt", [&] {
       const RegionLocator locate(domain);
       for (int iteration = 0; iteration < options.cvt_iterations; ++iteration) {
-        const Clipping c = clip(domain, material, seeds, options, nullptr);
+        const Clipping c = clip(domain, seeds, options, nullptr);
         for (const VoronoiCell& cell : c.cells.cells) {
-          if (locate.region_of(cell.centroid) == material) seeds[cell.seed].position = cell.centroid;
+          if (locate.region_of(cell.centroid) == cell.region) seeds[cell.seed].position = cell.centroid;
         }
       }
     });
   }
   if (options.before_cells) options.before_cells(seeds);
-  Clipping c = clip(domain, material, seeds, options, &phases);
+  Clipping c = clip(domain, seeds, options, &phases);
   return {std::move(c.seeds), std::move(c.cells), c.stats};
 }
 

@@ -1,18 +1,20 @@
 // Internal: the clipped methods end to end, from a labelled domain to its clipped Voronoi mesh.
 //
-// Contract of clipped_cells(domain, material, options, phases):
+// Contract of clipped_cells(domain, options, phases): every region of `domain` but the outside
+// (label 0) is a material, meshed with seeds of its own.
 // - seeds: InteriorMode::Random gives Ebeida and Mitchell's maximal Poisson-disk seeds at
-//   options.radius (poisson_disk_seeds.hpp, phase "interior seeds"); Lattice a cubic lattice of
-//   that spacing, the points inside the material, each moved by up to a thousandth of the spacing
+//   options.radius in each material (poisson_disk_seeds.hpp, phase "interior seeds"); Lattice a
+//   cubic lattice of that spacing, the points inside the materials, each moved by up to a thousandth of the spacing
 //   (ties of a perfect lattice are not decided), and Poisson-disk seeds where it leaves room (a
 //   thin part between its points); Cvt the Poisson-disk seeds moved by options.cvt_iterations
 //   Lloyd iterations on the clipped cells (Yan et al. 2011, section 5: each seed to its clipped
 //   cell's centroid, a centroid outside the material leaving its seed where it was; phase "cvt").
-// - then the Voronoi cells of those seeds and outside seeds 1.5 radii beyond the domain's box,
-//   cut to the material (clip_cells.hpp; phase "cells"). Where an outside seed is nearer part of
+// - then each material's Voronoi cells of its seeds and outside seeds 1.5 radii beyond the
+//   domain's box, cut to the materials (clip_cells.hpp; phase "cells"). Where an outside seed is nearer part of
 //   the surface than every material seed, the outside seeds move fourfold farther and the cells
 //   are cut again.
-// Returns the seeds (the cells' first, in cell order, then the outside seeds) and the mesh.
+// Returns the seeds (the cells' first, in cell order, grouped by material, then the outside seeds)
+// and the mesh.
 #pragma once
 
 #include <cstdint>
@@ -42,7 +44,6 @@ struct ClippedMesh {
   ClippingStats stats;
 };
 
-ClippedMesh clipped_cells(const SurfaceMesh& domain, std::int32_t material, const ClippedOptions& options,
-                          Phases& phases);
+ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& options, Phases& phases);
 
 }  // namespace vorocrust::clipping

@@ -85,9 +85,10 @@ double refuse_above_memory(double cells, const MeshOptions& options, bool so_far
   const double peak = resident + kCellBytes * cells;
   if (peak <= options.max_memory_gb * 1e9) return resident;
   const std::string estimate =
-      so_far ? c_format("more than %.3g GB at its peak: the seeds placed so far already make %.0f cells (%.3g GB now "
-                        "and about %.3g KB for each)",
-                        peak / 1e9, cells, resident / 1e9, kCellBytes / 1e3)
+      so_far ? c_format(
+                   "more than %.3g GB at its peak: the seeds placed so far already make %.0f cells (%.3g GB now "
+                   "and about %.3g KB for each)",
+                   peak / 1e9, cells, resident / 1e9, kCellBytes / 1e3)
              : c_format("about %.3g GB at its peak (%.3g GB now and about %.3g KB for each of its %.0f cells)",
                         peak / 1e9, resident / 1e9, kCellBytes / 1e3, cells);
   throw Error(Error::Kind::Usage,
@@ -101,7 +102,7 @@ double refuse_above_memory(double cells, const MeshOptions& options, bool so_far
 // far, with what the run holds, already need more than the bound. A run of far too many cells
 // (a maximum size mistyped by a factor of ten) stops here, before its seeds fill the memory.
 std::function<void(std::size_t)> memory_guard_while_sampling(const std::vector<Seed>& surface_seeds,
-                                                               const MeshOptions& options) {
+                                                             const MeshOptions& options) {
   if (std::isinf(options.max_memory_gb)) return {};
   return [surface_cells = material_seeds(surface_seeds), &options](std::size_t placed) {
     refuse_above_memory(surface_cells + static_cast<double>(placed), options, true);
@@ -135,14 +136,14 @@ void guard_memory_for_max_size(const std::vector<RegionSummary>& regions, const 
   const double cells = volume / cell_volume;
   if (kCellBytes * cells <= bound) return;
   const double fitting = std::cbrt(volume * kCellBytes / (4 * std::numbers::pi / 3 * bound));
-  throw Error(Error::Kind::Usage,
-              c_format("max_size %.3g asks for at least %.3g cells (the materials' volume %.4g, a ball of radius "
-                       "max_size at most for each), which would need at least %.3g GB at about %.3g KB for each, "
-                       "above %s %.3g GB: raise max_size (above %.3g for that memory)%s",
-                       options.max_size, cells, volume, kCellBytes * cells / 1e9, kCellBytes / 1e3,
-                       bounded ? "`max_memory`'s" : "this machine's", bound / 1e9, fitting,
-                       bounded ? " or `max_memory`" : ""),
-              {.option = "max_size"});
+  throw Error(
+      Error::Kind::Usage,
+      c_format("max_size %.3g asks for at least %.3g cells (the materials' volume %.4g, a ball of radius "
+               "max_size at most for each), which would need at least %.3g GB at about %.3g KB for each, "
+               "above %s %.3g GB: raise max_size (above %.3g for that memory)%s",
+               options.max_size, cells, volume, kCellBytes * cells / 1e9, kCellBytes / 1e3,
+               bounded ? "`max_memory`'s" : "this machine's", bound / 1e9, fitting, bounded ? " or `max_memory`" : ""),
+      {.option = "max_size"});
 }
 
 void count_seed_kinds(const std::vector<Seed>& seeds, InteriorStats& stats) {
@@ -157,9 +158,10 @@ void count_seed_kinds(const std::vector<Seed>& seeds, InteriorStats& stats) {
 // The domain: the model in its box, cut along its self-intersections; the regions it bounds,
 // and the fewest cells they need weighed against the memory.
 SurfaceMesh labelled_domain(const SurfaceMesh& model, const MeshOptions& options, Phases& phase, MeshResult& result) {
-  SurfaceMesh input = options.self_intersections == SelfIntersections::Resolve
-                          ? phase("self-intersections", [&] { return prepare_domain(model, options, &result.self_intersections); })
-                          : prepare_domain(model, options);
+  SurfaceMesh input =
+      options.self_intersections == SelfIntersections::Resolve
+          ? phase("self-intersections", [&] { return prepare_domain(model, options, &result.self_intersections); })
+          : prepare_domain(model, options);
   result.regions = phase("regions", [&] { return label_regions(input); });
   guard_memory_for_max_size(result.regions, options);
   return input;
@@ -181,10 +183,12 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
     return result;
   }
   // Surface seeds, slivers and the surface mesh (2.4).
-  const SeedPairs pairs = phase("slivers", [&] { return eliminate_slivers(refinement, sliver_options(options), progress, result.slivers); });
+  const SeedPairs pairs = phase(
+      "slivers", [&] { return eliminate_slivers(refinement, sliver_options(options), progress, result.slivers); });
   result.balls = refinement.balls();
   const RegionLocator regions(result.smoothed_input);
-  SurfaceSeeds surface = phase("surface seeds", [&] { return surface_seeds(refinement.index(), pairs.uncovered, regions); });
+  SurfaceSeeds surface =
+      phase("surface seeds", [&] { return surface_seeds(refinement.index(), pairs.uncovered, regions); });
   result.seeds = std::move(surface.seeds);
   result.surface = std::move(surface.surface);
   result.surface_quality = phase("surface quality", [&] { return measure_surface_quality(input, result.surface); });
@@ -198,23 +202,18 @@ MeshResult run_pipeline(const SurfaceMesh& model, const MeshOptions& options, co
   // stage, and before the guard measures what the run holds.
   release_free_memory();
   guard_memory(result.seeds, options, result.interior);
-  result.cells = conforming_cells(result.seeds, caps, refinement.index(), regions, cells_options(options), phase, result.interior);
+  result.cells =
+      conforming_cells(result.seeds, caps, refinement.index(), regions, cells_options(options), phase, result.interior);
   count_seed_kinds(result.seeds, result.interior);
   result.cells.region_names = result.surface.region_names;
-  result.cell_quality = phase("cell quality", [&] { return measure_cell_quality(result.cells, {.threads = options.threads}); });
+  result.cell_quality =
+      phase("cell quality", [&] { return measure_cell_quality(result.cells, {.threads = options.threads}); });
   return result;
 }
 
-// The one material a clipped mesh is cut to: the clipped methods mesh one region, bounded by
-// closed surfaces; a face with the material on both sides (a sheet inside it) would be lost.
-std::int32_t clipped_material(const SurfaceMesh& input, const std::vector<RegionSummary>& regions) {
-  if (regions.size() != 2) {
-    throw Error(Error::Kind::Usage,
-                c_format("`method` 'clipped' meshes one material, and this input bounds %zu: mesh it with 'vorocrust', "
-                         "or one material at a time",
-                         regions.size() - 1),
-                {.option = "method"});
-  }
+// The clipped methods cut cells along the surfaces between regions; a face with one region on
+// both sides (a sheet inside a material) would be lost.
+void refuse_sheets(const SurfaceMesh& input) {
   for (std::size_t f = 0; f < input.num_faces(); ++f) {
     if (input.face_regions[f].back == input.face_regions[f].front) {
       throw Error(Error::Kind::InvalidGeometry,
@@ -223,7 +222,6 @@ std::int32_t clipped_material(const SurfaceMesh& input, const std::vector<Region
                   {.face = f, .option = "method"});
     }
   }
-  return 1;
 }
 
 double bounding_diagonal(const SurfaceMesh& mesh) {
@@ -231,13 +229,13 @@ double bounding_diagonal(const SurfaceMesh& mesh) {
   return (box.hi - box.lo).norm();
 }
 
-// The clipped methods (Ebeida and Mitchell; Yan et al.): seeds inside the material only, their
-// Voronoi cells cut to the input.
+// The clipped methods (Ebeida and Mitchell; Yan et al.): seeds inside each material only, each
+// material's Voronoi cells cut to its region.
 MeshResult run_clipped(const SurfaceMesh& model, const MeshOptions& options, const ProgressCallback& progress) {
   MeshResult result;
   Phases phase(result.timings, progress);
   SurfaceMesh input = labelled_domain(model, options, phase, result);
-  const std::int32_t material = clipped_material(input, result.regions);
+  refuse_sheets(input);
   clipping::ClippedOptions clipped;
   clipped.radius = std::isfinite(options.max_size) ? options.max_size : bounding_diagonal(input) / 20;
   clipped.mode = options.interior;
@@ -245,7 +243,7 @@ MeshResult run_clipped(const SurfaceMesh& model, const MeshOptions& options, con
   clipped.seed = options.seed;
   clipped.threads = options.threads;
   clipped.before_cells = [&](const std::vector<Seed>& seeds) { guard_memory(seeds, options, result.interior); };
-  clipping::ClippedMesh mesh = clipping::clipped_cells(input, material, clipped, phase);
+  clipping::ClippedMesh mesh = clipping::clipped_cells(input, clipped, phase);
   result.seeds = std::move(mesh.seeds);
   result.cells = std::move(mesh.cells);
   result.clipping = mesh.stats;
@@ -254,8 +252,10 @@ MeshResult run_clipped(const SurfaceMesh& model, const MeshOptions& options, con
   // The boundary is the input's own: the surface figures compare it with itself.
   result.smoothed_input = input;
   result.surface = std::move(input);
-  result.surface_quality = phase("surface quality", [&] { return measure_surface_quality(result.smoothed_input, result.surface); });
-  result.cell_quality = phase("cell quality", [&] { return measure_cell_quality(result.cells, {.threads = options.threads}); });
+  result.surface_quality =
+      phase("surface quality", [&] { return measure_surface_quality(result.smoothed_input, result.surface); });
+  result.cell_quality =
+      phase("cell quality", [&] { return measure_cell_quality(result.cells, {.threads = options.threads}); });
   return result;
 }
 
@@ -279,7 +279,8 @@ MeshResult generate_mesh(const SurfaceMesh& model, const MeshOptions& options, c
   // with or without a ThreadLimit of its own.
   tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
   return arena.execute([&] {
-    return options.method == Method::Clipped ? run_clipped(model, options, progress) : run_pipeline(model, options, progress);
+    return options.method == Method::Clipped ? run_clipped(model, options, progress)
+                                             : run_pipeline(model, options, progress);
   });
 }
 

@@ -237,7 +237,8 @@ const std::array<OptionSpec, 20> kSpecs = {{
      .label = "Method",
      .help = "How the cells meet the surface: 'vorocrust' (seeds in pairs about the surface; every cell a whole, "
              "convex Voronoi cell, the surface approximated by their faces) or 'clipped' (seeds inside only, each "
-             "Voronoi cell cut to the input: the boundary and the volumes exact, the cut cells not convex; "
+             "Voronoi cell cut to its material's region: the boundary, the interfaces and the volumes exact, the cut "
+             "cells not convex; "
              "`interior` 'random' gives Ebeida and Mitchell's maximal Poisson-disk seeds of radius `max_size` "
              "(unset, a twentieth of the input's diagonal), 'cvt' Yan et al.'s Lloyd iterations on the clipped "
              "cells, 'lattice' a cubic lattice of that spacing)",
