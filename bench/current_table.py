@@ -39,7 +39,7 @@ STAGES = [
     ("refinement", ("refinement",)),
     ("seeds", ("slivers", "surface seeds", "surface quality", "cap seeds")),
     ("interior", ("interior seeds",)),
-    ("cells", ("cells", "skew repair", "aspect splits", "assembly")),
+    ("cells", ("cells", "clipping", "skew repair", "aspect splits", "assembly")),
     ("quality", ("cell quality",)),
     ("writing", ("writing",)),
 ]

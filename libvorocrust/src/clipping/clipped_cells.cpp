@@ -66,12 +66,14 @@ Clipping clip(const SurfaceMesh& domain, const std::vector<Seed>& seeds, const C
     Clipping c;
     c.seeds = seeds;
     for (Seed& s : outside_seeds(domain, margin, options.radius)) c.seeds.push_back(s);
-    const auto cut = [&] {
-      c.cells = clip_cells(material_diagrams(c.seeds, seeds.size(), options.threads), domain, &c.stats);
-    };
+    VoronoiMesh diagrams;
+    const auto voronoi = [&] { diagrams = material_diagrams(c.seeds, seeds.size(), options.threads); };
+    const auto cut = [&] { c.cells = clip_cells(diagrams, domain, &c.stats); };
     if (phases) {
-      (*phases)("cells", cut);
+      (*phases)("cells", voronoi);
+      (*phases)("clipping", cut);
     } else {
+      voronoi();
       cut();
     }
     if (c.stats.uncovered_triangles == 0) return c;

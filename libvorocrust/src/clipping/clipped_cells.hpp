@@ -10,9 +10,9 @@
 //   Lloyd iterations on the clipped cells (Yan et al. 2011, section 5: each seed to its clipped
 //   cell's centroid, a centroid outside the material leaving its seed where it was; phase "cvt").
 // - then each material's Voronoi cells of its seeds and outside seeds 1.5 radii beyond the
-//   domain's box, cut to the materials (clip_cells.hpp; phase "cells"). Where an outside seed is nearer part of
-//   the surface than every material seed, the outside seeds move fourfold farther and the cells
-//   are cut again.
+//   domain's box (phase "cells"), cut to the materials (clip_cells.hpp; phase "clipping"). Where
+//   an outside seed is nearer part of the surface than every material seed, the outside seeds
+//   move fourfold farther and the cells are cut again.
 // Returns the seeds (the cells' first, in cell order, grouped by material, then the outside seeds)
 // and the mesh.
 #pragma once

@@ -22,6 +22,20 @@ struct Cube {
   bool near_surface = false;  // the surface may cross it
 };
 
+// The faces that bound `material`: a cube none of them crosses lies wholly inside it or outside,
+// whatever other regions' faces cross it.
+geometry::BoxTree boundary_tree(const SurfaceMesh& domain, std::int32_t material) {
+  std::vector<geometry::Box> boxes(domain.num_faces());
+  std::vector<std::uint32_t> faces;
+  for (std::uint32_t f = 0; f < domain.num_faces(); ++f) {
+    const RegionPair& r = domain.face_regions[f];
+    if ((r.back == material) == (r.front == material)) continue;
+    for (Index v : domain.triangles[f]) boxes[f].include(domain.vertices[v]);
+    faces.push_back(f);
+  }
+  return {std::move(boxes), std::move(faces)};
+}
+
 geometry::Box box_of(const SurfaceMesh& domain) {
   geometry::Box box;
   for (const Point& p : domain.vertices) box.include(p);
@@ -36,8 +50,7 @@ class Sampler {
         r_(radius),
         side_(radius / std::sqrt(3.0)),
         locate_(domain),
-        faces_(geometry::face_tree(domain)),
-        faces_count_(static_cast<std::uint32_t>(domain.num_faces())),
+        faces_(boundary_tree(domain, material)),
         random_(seed) {
     const geometry::Box box = box_of(domain);
     lo_ = box.lo;
@@ -136,15 +149,16 @@ class Sampler {
   std::vector<Cube> grid_cubes() {
     enum : std::int8_t { kUnknown, kNear, kInside, kOutside };
     std::vector<std::int8_t> state(grid_.size(), kUnknown);
-    for (std::uint32_t t = 0; t < faces_count_; ++t) {
-      const geometry::Box& b = faces_.box(t);
-      const auto lo = cell_of(b.lo), hi = cell_of(b.hi);
-      for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
-        for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
-          for (std::int64_t x = lo[0]; x <= hi[0]; ++x) state[flat({x, y, z})] = kNear;
-        }
-      }
-    }
+    faces_.for_each_where([](const geometry::Box&) { return true; },
+                          [&](std::uint32_t t) {
+                            const geometry::Box& b = faces_.box(t);
+                            const auto lo = cell_of(b.lo), hi = cell_of(b.hi);
+                            for (std::int64_t z = lo[2]; z <= hi[2]; ++z) {
+                              for (std::int64_t y = lo[1]; y <= hi[1]; ++y) {
+                                for (std::int64_t x = lo[0]; x <= hi[0]; ++x) state[flat({x, y, z})] = kNear;
+                              }
+                            }
+                          });
     std::vector<std::array<std::int64_t, 3>> stack;
     for (std::int64_t z = 0; z < dims_[2]; ++z) {
       for (std::int64_t y = 0; y < dims_[1]; ++y) {
@@ -248,8 +262,7 @@ class Sampler {
   std::vector<std::int32_t> grid_;
   std::vector<Seed> seeds_;
   RegionLocator locate_;
-  geometry::BoxTree faces_;
-  std::uint32_t faces_count_;
+  geometry::BoxTree faces_;  // the material's boundary
   SplitMix64 random_;
 };
 
