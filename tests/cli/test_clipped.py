@@ -244,6 +244,63 @@ class Clipped(unittest.TestCase):
         self.check_materials("sandia_cube_test_02.obj")
         self.check_materials("openmeeg_HeadNNb3.obj", "--interior", "lattice")
 
+    def test_welding(self):
+        """--weld: no edge shorter than the fraction of the radius where no chain was kept, every
+        cell still closed, the non-planarity reported and bounded by about the fraction."""
+        out, report = self.mesh("cgal_fandisk.off", "--max-size", "0.1", "--weld", "0.05")
+        welding = report["welding"]
+        self.assertGreater(welding["welded_points"], 0)
+        self.assertLess(welding["shortest_edge_before"], 0.05)
+        if welding["kept_edges"] == 0:
+            self.assertGreaterEqual(welding["shortest_edge_after"], 0.05 * (1 - 1e-12))
+        self.assertGreater(welding["max_non_planarity"], 0)
+        self.assertLess(welding["max_non_planarity"], 0.1)
+        grid = read_vtu(os.path.join(out, "mesh.vtu"))
+        points = vtk_to_numpy(grid.GetPoints().GetData())
+        shortest = numpy.inf
+        for c, faces in enumerate(all_polyhedron_faces(grid)):
+            edges = [(f[k], f[(k + 1) % len(f)]) for f in faces for k in range(len(f))]
+            self.assertEqual(sorted(edges), sorted((b, a) for a, b in edges), "cell %d is open" % c)
+            shortest = min(shortest, min(numpy.linalg.norm(points[a] - points[b]) for a, b in edges))
+        self.assertAlmostEqual(shortest / 0.1, welding["shortest_edge_after"], delta=1e-9)
+        result, _ = check_mesh(os.path.join(out, "case"))
+        for line in ("Cell to face addressing OK", "Point usage OK", "Face vertices OK", "Cell volumes OK"):
+            self.assertIn(line, result.stdout)
+        r = run("mesh", os.path.join(MODELS, "cgal_fandisk.off"), "-o", os.path.join(self.dir, "v"), "--weld", "0.01")
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("--method 'clipped'", r.stderr)
+
+    def test_given_seeds(self):
+        """--seeds: a run's own seeds.csv given back makes the same mesh, byte for byte; --interior
+        cvt moves given seeds; a seed outside the region it names is refused, naming it."""
+        out, report = self.mesh("sandia_cube_test_02.obj", name="sampled")
+        seeds_csv = os.path.join(out, "seeds.csv")
+        again, _ = self.mesh("sandia_cube_test_02.obj", "--seeds", seeds_csv, name="given")
+        for name in ("mesh.vtu", "seeds.csv"):
+            with open(os.path.join(out, name), "rb") as a, open(os.path.join(again, name), "rb") as b:
+                self.assertEqual(a.read(), b.read(), name)
+        moved, moved_report = self.mesh("sandia_cube_test_02.obj", "--seeds", seeds_csv, "--interior", "cvt",
+                                        "--cvt-iterations", "3", name="moved")
+        self.assertEqual(moved_report["cells"]["cells"], report["cells"]["cells"])
+        with open(os.path.join(out, "seeds.csv"), "rb") as a, open(os.path.join(moved, "seeds.csv"), "rb") as b:
+            self.assertNotEqual(a.read(), b.read())
+        with open(seeds_csv) as f:
+            lines = f.readlines()
+        fields = lines[1].split(",")
+        fields[3] = "2" if fields[3] != "2" else "3"
+        wrong = os.path.join(self.dir, "wrong.csv")
+        with open(wrong, "w") as f:
+            f.writelines([lines[0], ",".join(fields)] + lines[2:])
+        r = run("mesh", os.path.join(MODELS, "sandia_cube_test_02.obj"), "-o", os.path.join(self.dir, "w"),
+                "--method", "clipped", "--seeds", wrong)
+        self.assertEqual(r.returncode, 4, r.stderr)
+        self.assertIn("seed 1 ", r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.dir, "w", "mesh.vtu")))
+        r = run("mesh", os.path.join(MODELS, "sandia_cube_test_02.obj"), "-o", os.path.join(self.dir, "v"),
+                "--seeds", seeds_csv)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("--method 'clipped'", r.stderr)
+
     def test_inputs_it_cannot_clip_are_refused(self):
         r = run("mesh", os.path.join(MODELS, "gmsh_terrain.stl"), "-o", os.path.join(self.dir, "t"),
                 "--method", "clipped")

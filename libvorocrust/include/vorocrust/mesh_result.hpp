@@ -48,6 +48,8 @@ struct VOROCRUST_API MeshResult {
   VoronoiMesh cells;
   // What cutting the cells to the input did, for MeshOptions::method Clipped.
   std::optional<ClippingStats> clipping;
+  // What welding short edges did, for MeshOptions::weld above 0.
+  std::optional<WeldStats> welding;
   // The cells measured as the paper's section 3 does (aspect ratio, volume, faces, edges).
   std::optional<CellQuality> cell_quality;
 };

@@ -72,6 +72,13 @@ struct VOROCRUST_API MeshOptions {
   SelfIntersections self_intersections = SelfIntersections::Resolve;
   InteriorMode interior = InteriorMode::Random;
   int cvt_iterations = 20;  // Lloyd iterations of InteriorMode::Cvt
+  // With Method::Clipped: edges shorter than this fraction of the seeds' radius collapse to one
+  // point (Ebeida and Mitchell's welding; 1e-4 is theirs), leaving faces slightly non-planar
+  // (cells/weld_short_edges.hpp). 0 welds none.
+  double weld = 0;
+  // With Method::Clipped: the seeds (OUTDIR/seeds.csv's form) instead of sampled ones; each seed
+  // of a material must lie in its region, outside seeds are ignored. `interior` Cvt moves them.
+  std::filesystem::path seeds_file;
   // Cells whose aspect ratio (smallest enclosing sphere over largest inscribed ball) exceeds this
   // get a seed at their centroid, for at most 2 rounds (cells/repair_cells.hpp); 0 splits none.
   // 5 by default, above the paper's 4.86 for its smooth model.

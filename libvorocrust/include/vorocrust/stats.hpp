@@ -117,6 +117,19 @@ struct VOROCRUST_API ClippingStats {
   std::size_t uncovered_triangles = 0;
 };
 
+// What welding short edges did (MeshOptions::weld; cells/weld_short_edges.hpp).
+struct VOROCRUST_API WeldStats {
+  double fraction = 0;               // of the local spacing below which an edge is short
+  std::size_t short_edges = 0;       // edges found shorter
+  std::size_t welded_points = 0;     // points that became part of another
+  std::size_t dropped_faces = 0;     // faces left with fewer than three points
+  std::size_t kept_edges = 0;        // short edges left, where welding would pinch a face or flatten a cell
+  std::size_t non_planar_faces = 0;  // faces off their plane by more than 1e-12 of their diameter
+  double max_non_planarity = 0;      // largest distance from a face's plane over its diameter
+  double shortest_edge_before = 0;   // over the local spacing
+  double shortest_edge_after = 0;
+};
+
 struct VOROCRUST_API FeatureCounts {
   std::size_t sharp_edges = 0, corners = 0, creases = 0, patches = 0;
   std::size_t faces_after_smoothing = 0;

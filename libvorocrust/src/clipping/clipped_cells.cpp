@@ -89,6 +89,11 @@ ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& optio
   std::int32_t materials = 0;
   for (const RegionPair& r : domain.face_regions) materials = std::max({materials, r.back, r.front});
   std::vector<Seed> seeds = phases("interior seeds", [&] {
+    if (!options.given.empty()) {
+      std::vector<Seed> given = options.given;
+      std::stable_sort(given.begin(), given.end(), [](const Seed& a, const Seed& b) { return a.region < b.region; });
+      return given;
+    }
     const std::vector<Seed> lattice = options.mode == InteriorMode::Lattice
                                           ? lattice_seeds(domain, options.radius, options.seed)
                                           : std::vector<Seed>{};

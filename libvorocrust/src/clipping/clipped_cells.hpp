@@ -2,7 +2,8 @@
 //
 // Contract of clipped_cells(domain, options, phases): every region of `domain` but the outside
 // (label 0) is a material, meshed with seeds of its own.
-// - seeds: InteriorMode::Random gives Ebeida and Mitchell's maximal Poisson-disk seeds at
+// - seeds: options.given where there are any (sorted by material, their order kept within
+//   each); else InteriorMode::Random gives Ebeida and Mitchell's maximal Poisson-disk seeds at
 //   options.radius in each material (poisson_disk_seeds.hpp, phase "interior seeds"); Lattice a
 //   cubic lattice of that spacing, the points inside the materials, each moved by up to a thousandth of the spacing
 //   (ties of a perfect lattice are not decided), and Poisson-disk seeds where it leaves room (a
@@ -34,6 +35,8 @@ struct ClippedOptions {
   int cvt_iterations = 20;
   std::uint64_t seed = 0;
   int threads = 0;
+  // Seeds given instead of sampled (each inside its material; `mode` Cvt still moves them).
+  std::vector<Seed> given;
   // Called with the material seeds before their cells, to refuse a run that would not fit.
   std::function<void(const std::vector<Seed>&)> before_cells;
 };

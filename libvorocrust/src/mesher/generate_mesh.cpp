@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cells/conforming_cells.hpp"
+#include "cells/weld_short_edges.hpp"
 #include "clipping/clipped_cells.hpp"
 #include "core/c_format.hpp"
 #include "core/memory.hpp"
@@ -224,6 +225,31 @@ void refuse_sheets(const SurfaceMesh& input) {
   }
 }
 
+// The material seeds of a given seeds file, each checked to lie in the region it names: a seed
+// outside its region would leave part of the region to no cell.
+std::vector<Seed> given_seeds(const std::filesystem::path& path, const SurfaceMesh& input) {
+  const std::vector<Seed> all = read_seeds_csv(path);
+  const RegionLocator locate(input);
+  std::vector<Seed> seeds;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Seed& s = all[i];
+    if (s.region <= 0) continue;
+    const std::int32_t region = locate.region_of(s.position);
+    if (region != s.region) {
+      throw Error(Error::Kind::InvalidGeometry,
+                  c_format("%s: seed %zu (%s) is labelled region %d but lies in region %d", path.string().c_str(),
+                           i + 1, describe_point(s.position).c_str(), s.region, region),
+                  {.option = "seeds"});
+    }
+    seeds.push_back(s);
+  }
+  if (seeds.empty()) {
+    throw Error(Error::Kind::InvalidGeometry, path.string() + ": no seed is labelled with a material (label above 0)",
+                {.option = "seeds"});
+  }
+  return seeds;
+}
+
 double bounding_diagonal(const SurfaceMesh& mesh) {
   const geometry::Box box = bounding_box(mesh);
   return (box.hi - box.lo).norm();
@@ -242,11 +268,18 @@ MeshResult run_clipped(const SurfaceMesh& model, const MeshOptions& options, con
   clipped.cvt_iterations = options.cvt_iterations;
   clipped.seed = options.seed;
   clipped.threads = options.threads;
+  if (!options.seeds_file.empty()) clipped.given = phase("reading seeds", [&] { return given_seeds(options.seeds_file, input); });
   clipped.before_cells = [&](const std::vector<Seed>& seeds) { guard_memory(seeds, options, result.interior); };
   clipping::ClippedMesh mesh = clipping::clipped_cells(input, clipped, phase);
   result.seeds = std::move(mesh.seeds);
   result.cells = std::move(mesh.cells);
   result.clipping = mesh.stats;
+  if (options.weld > 0) {
+    result.welding = phase("welding", [&] {
+      return cells::weld_short_edges(result.cells, std::vector<double>(result.cells.cells.size(), clipped.radius),
+                                     options.weld);
+    });
+  }
   count_seed_kinds(result.seeds, result.interior);
   result.cells.region_names = RegionLocator(input).region_names();
   // The boundary is the input's own: the surface figures compare it with itself.

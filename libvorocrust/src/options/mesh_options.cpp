@@ -65,7 +65,7 @@ void set_bound(MeshOptions& o, const OptionValue& v) {
 
 // The table. Help texts say what an option does in the paper's words and name no flag: each front
 // end adds its own spelling, the default and the range (default_text, range_text).
-const std::array<OptionSpec, 20> kSpecs = {{
+const std::array<OptionSpec, 22> kSpecs = {{
     {.name = "lipschitz",
      .kind = OptionKind::Real,
      .label = "Lipschitz constant L",
@@ -271,6 +271,39 @@ const std::array<OptionSpec, 20> kSpecs = {{
      .get = [](const MeshOptions& o) -> OptionValue { return std::int64_t{o.cvt_iterations}; },
      .set =
          [](MeshOptions& o, const OptionValue& v) { o.cvt_iterations = static_cast<int>(std::get<std::int64_t>(v)); }},
+    {.name = "weld",
+     .kind = OptionKind::Real,
+     .label = "Weld short edges",
+     .help = "With `method` 'clipped': edges shorter than this fraction of the seeds' radius collapse to one point "
+             "(Ebeida and Mitchell's welding; theirs is 1e-4), the faces about them left slightly non-planar and "
+             "their largest non-planarity reported; 0 welds none",
+     .section = "1",
+     .group = "Domain",
+     .default_value = 0.0,
+     .min = 0,
+     .max = 0.5,
+     .max_open = true,
+     .get = [](const MeshOptions& o) -> OptionValue { return o.weld; },
+     .set = [](MeshOptions& o, const OptionValue& v) { o.weld = std::get<double>(v); }},
+    {.name = "seeds",
+     .kind = OptionKind::File,
+     .label = "Seeds file",
+     .help = "With `method` 'clipped': the seeds, a CSV file as OUTDIR/seeds.csv is written (x,y,z,label,radius,kind), "
+             "instead of sampled ones; each seed of a material must lie in its region, outside seeds (label 0) are "
+             "ignored, and `interior` 'cvt' moves them by Lloyd iterations",
+     .section = "1",
+     .group = "Domain",
+     .default_value = std::monostate{},
+     .unset_means = "none",
+     .get =
+         [](const MeshOptions& o) -> OptionValue {
+           if (o.seeds_file.empty()) return std::monostate{};
+           return o.seeds_file.string();
+         },
+     .set =
+         [](MeshOptions& o, const OptionValue& v) {
+           o.seeds_file = v.index() == 0 ? std::filesystem::path() : std::filesystem::path(std::get<std::string>(v));
+         }},
     {.name = "max_aspect_ratio",
      .kind = OptionKind::Real,
      .label = "Largest cell aspect ratio",
@@ -704,6 +737,18 @@ void MeshOptions::check() const {
   // The values in force are checked: an unset option whose default follows `smooth` has a default
   // in range, and a set one is checked as given.
   for (const auto& [name, value] : options_in_force(*this)) check_option_value(*find_option(name), value);
+  if (weld > 0 && method != Method::Clipped) {
+    throw Error(Error::Kind::Usage,
+                "`weld` collapses the short edges of clipped cells: it needs `method` 'clipped' (a VoroCrust mesh "
+                "keeps every face planar and orthogonal to its seeds' link)",
+                {.option = "weld"});
+  }
+  if (!seeds_file.empty() && method != Method::Clipped) {
+    throw Error(Error::Kind::Usage,
+                "`seeds` gives the seeds of a clipped mesh: it needs `method` 'clipped' (VoroCrust places its own "
+                "seeds about the surface; `vorocrust cells` makes the Voronoi mesh of given seeds)",
+                {.option = "seeds"});
+  }
 }
 
 }  // namespace vorocrust

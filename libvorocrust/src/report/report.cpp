@@ -479,6 +479,21 @@ std::string run_report_json(const RunReport& report, int indent) {
                          {"clipped_faces", c.clipped_faces},   {"dropped_faces", c.dropped_faces},
                          {"holes", c.holes}};
     }
+    if (m.welding) {
+      const WeldStats& w = *m.welding;
+      doc["welding"] = {{"fraction", w.fraction},
+                        {"short_edges", w.short_edges},
+                        {"welded_points", w.welded_points},
+                        {"dropped_faces", w.dropped_faces},
+                        {"kept_edges", w.kept_edges},
+                        {"non_planar_faces", w.non_planar_faces},
+                        {"max_non_planarity", w.max_non_planarity},
+                        {"non_planarity_definition",
+                         "largest distance of a face's point from its plane over the face's diameter"},
+                        {"shortest_edge_before", w.shortest_edge_before},
+                        {"shortest_edge_after", w.shortest_edge_after},
+                        {"shortest_edge_definition", "shortest edge over the seeds' radius"}};
+    }
   }
   if (report.mesh && report.input && report.validation) {
     doc["input"] = info_object(report.inputs, *report.mesh, *report.input, *report.validation);
