@@ -42,6 +42,11 @@ def read_seeds(path):
     return numpy.array([[float(x) for x in r[:3]] for r in rows]), [int(r[3]) for r in rows]
 
 
+def read_kinds(path):
+    with open(path) as f:
+        return [line.strip().split(",")[5] for line in f.readlines()[1:]]
+
+
 def surface_of(grid):
     """The faces of the grid used by one cell only, as VTK finds them."""
     surface = vtk.vtkDataSetSurfaceFilter()
@@ -130,8 +135,12 @@ class Clipped(unittest.TestCase):
         if radius is not None:
             inner = seeds[material]
             tree = cKDTree(inner)
-            pairs = tree.query_pairs(radius * (1 - 1e-12))
-            self.assertEqual(len(pairs), 0)
+            # Interior seeds at least r from every seed; seeds on reflex edges (kind "surface",
+            # moved in by a thousandth) at least r / sqrt(2) from each other.
+            kinds = [k for k, m in zip(read_kinds(os.path.join(out, "seeds.csv")), material) if m]
+            for i, j in tree.query_pairs(radius * (1 - 1e-12)):
+                self.assertEqual((kinds[i], kinds[j]), ("surface", "surface"))
+                self.assertGreater(numpy.linalg.norm(inner[i] - inner[j]), radius / 2 ** 0.5 * (1 - 3e-3))
             lo, hi = inner.min(axis=0) - radius, inner.max(axis=0) + radius
             samples = numpy.random.default_rng(1).uniform(lo, hi, size=(20000, 3))
             inside = points_inside(model_surface, samples)

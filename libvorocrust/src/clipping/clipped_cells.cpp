@@ -99,11 +99,11 @@ ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& optio
                                           : std::vector<Seed>{};
     std::vector<Seed> all;
     for (std::int32_t material = 1; material <= materials; ++material) {
+      // The first material draws from the run's seed itself, the others from streams of it.
+      const std::uint64_t stream = material == 1 ? options.seed : SplitMix64::stream(options.seed, material)();
       std::vector<Seed> placed;
       std::copy_if(lattice.begin(), lattice.end(), std::back_inserter(placed),
                    [&](const Seed& s) { return s.region == material; });
-      // The first material draws from the run's seed itself, the others from streams of it.
-      const std::uint64_t stream = material == 1 ? options.seed : SplitMix64::stream(options.seed, material)();
       for (Seed& s : poisson_disk_seeds(domain, material, options.radius, stream, placed)) all.push_back(s);
     }
     return all;
@@ -122,7 +122,9 @@ ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& optio
       for (int iteration = 0; iteration < options.cvt_iterations; ++iteration) {
         const Clipping c = clip(domain, seeds, options, nullptr);
         for (const VoronoiCell& cell : c.cells.cells) {
-          if (locate.region_of(cell.centroid) == cell.region) seeds[cell.seed].position = cell.centroid;
+          Seed& s = seeds[cell.seed];
+          if (s.kind == SeedKind::Interior && locate.region_of(cell.centroid) == cell.region)
+            s.position = cell.centroid;
         }
       }
     });

@@ -5,11 +5,13 @@
 // - seeds: options.given where there are any (sorted by material, their order kept within
 //   each); else InteriorMode::Random gives Ebeida and Mitchell's maximal Poisson-disk seeds at
 //   options.radius in each material (poisson_disk_seeds.hpp, phase "interior seeds"); Lattice a
-//   cubic lattice of that spacing, the points inside the materials, each moved by up to a thousandth of the spacing
-//   (ties of a perfect lattice are not decided), and Poisson-disk seeds where it leaves room (a
-//   thin part between its points); Cvt the Poisson-disk seeds moved by options.cvt_iterations
-//   Lloyd iterations on the clipped cells (Yan et al. 2011, section 5: each seed to its clipped
-//   cell's centroid, a centroid outside the material leaving its seed where it was; phase "cvt").
+//   cubic lattice of that spacing, the points inside the materials, each moved by up to a
+//   thousandth of the spacing (ties of a perfect lattice are not decided), and Poisson-disk
+//   seeds where it leaves room (a thin part between its points); Cvt the Poisson-disk seeds (or
+//   the given ones) moved by options.cvt_iterations Lloyd iterations on the clipped cells (Yan et
+//   al. 2011, section 5: each seed to its clipped cell's centroid; a centroid outside the
+//   material leaves its seed where it was, and seeds of a kind other than Interior, given seeds
+//   on the surface, stay; phase "cvt").
 // - then each material's Voronoi cells of its seeds and outside seeds 1.5 radii beyond the
 //   domain's box (phase "cells"), cut to the materials (clip_cells.hpp; phase "clipping"). Where
 //   an outside seed is nearer part of the surface than every material seed, the outside seeds

@@ -64,7 +64,14 @@ class Sampler {
                   {.option = "max_size"});
     }
     grid_.assign(static_cast<std::size_t>(cells), -1);
-    for (const Seed& s : placed) add(s);
+    // Placed interior seeds (a lattice) within r of a placed seed of another kind (on an edge)
+    // give way to it.
+    for (const Seed& s : placed) {
+      const bool crowded = s.kind == SeedKind::Interior && any_near(s.position, [&](const Seed& other) {
+                             return other.kind != SeedKind::Interior && (other.position - s.position).norm() < r_;
+                           });
+      if (!crowded) add(s);
+    }
   }
 
   std::vector<Seed> run() {
@@ -95,7 +102,7 @@ class Sampler {
     return static_cast<std::size_t>((c[2] * dims_[1] + c[1]) * dims_[0] + c[0]);
   }
 
-  // Calls visit(seed index) for the seeds of the grid cells within two of p's: every seed
+  // Calls visit(seed) for the seeds of the grid cells within two of p's: every seed
   // within r of p (r spans less than two grid cells).
   template <class Visit>
   bool any_near(const Point& p, Visit&& visit) const {
@@ -103,8 +110,9 @@ class Sampler {
     for (std::int64_t z = std::max<std::int64_t>(0, c[2] - 2); z <= std::min(dims_[2] - 1, c[2] + 2); ++z) {
       for (std::int64_t y = std::max<std::int64_t>(0, c[1] - 2); y <= std::min(dims_[1] - 1, c[1] + 2); ++y) {
         for (std::int64_t x = std::max<std::int64_t>(0, c[0] - 2); x <= std::min(dims_[0] - 1, c[0] + 2); ++x) {
-          const std::int32_t s = grid_[flat({x, y, z})];
-          if (s >= 0 && visit(seeds_[static_cast<std::size_t>(s)].position)) return true;
+          for (std::int32_t s = grid_[flat({x, y, z})]; s >= 0; s = next_[static_cast<std::size_t>(s)]) {
+            if (visit(seeds_[static_cast<std::size_t>(s)])) return true;
+          }
         }
       }
     }
@@ -112,16 +120,16 @@ class Sampler {
   }
 
   bool within_r(const Point& p) const {
-    return any_near(p, [&](const Point& s) { return (s - p).squaredNorm() < r_ * r_; });
+    return any_near(p, [&](const Seed& s) { return (s.position - p).squaredNorm() < r_ * r_; });
   }
 
   // A seed's ball holds the whole cube: the ball is convex, so holding its corners is enough.
   bool covered(const Cube& c, double side) const {
     const Point centre = c.lo + Point::Constant(side / 2);
-    return any_near(centre, [&](const Point& s) {
+    return any_near(centre, [&](const Seed& s) {
       for (int k = 0; k < 8; ++k) {
         const Point corner = c.lo + side * Point(k & 1, (k >> 1) & 1, (k >> 2) & 1);
-        if ((corner - s).squaredNorm() >= r_ * r_) return false;
+        if ((corner - s.position).squaredNorm() >= r_ * r_) return false;
       }
       return true;
     });
@@ -129,8 +137,12 @@ class Sampler {
 
   bool inside(const Point& p) const { return locate_.region_of(p) == material_; }
 
+  // A cube holds one sampled seed at most, but placed seeds (on reflex edges, r / sqrt(2) apart)
+  // may share one: each cube heads a list.
   void add(const Seed& s) {
-    grid_[flat(cell_of(s.position))] = static_cast<std::int32_t>(seeds_.size());
+    std::int32_t& head = grid_[flat(cell_of(s.position))];
+    next_.push_back(head);
+    head = static_cast<std::int32_t>(seeds_.size());
     seeds_.push_back(s);
   }
 
@@ -259,7 +271,8 @@ class Sampler {
   double r_, side_;
   Point lo_;
   std::array<std::int64_t, 3> dims_{};
-  std::vector<std::int32_t> grid_;
+  std::vector<std::int32_t> grid_;  // each cube's last seed, -1 for none
+  std::vector<std::int32_t> next_;  // each seed's predecessor in its cube
   std::vector<Seed> seeds_;
   RegionLocator locate_;
   geometry::BoxTree faces_;  // the material's boundary

@@ -5,12 +5,13 @@
 // not yet within r of a seed is as likely as any other to take the next seed.
 //
 // Contract of poisson_disk_seeds(domain, material, radius, seed, placed): `domain` carries its
-// regions (label_regions); `placed` seeds, at least r apart (a lattice), come first in the result
-// and the sampling fills what they leave. A background grid of cubes of side r / sqrt(3) (each holds one seed at most)
-// takes darts in random live cubes; then every cube no seed's ball covers whole is split in eight
-// and the darts go on among the parts, down to a 64th of the side. Cubes the surface may cross
-// take darts only at points inside the material (a ray decides). Equal seeds give equal samples.
-// The seeds are interior seeds of `material`, with `radius` as their radius.
+// regions (label_regions); `placed` seeds (seeds on reflex edges, then a lattice) come first in
+// the result, but for lattice (interior) points within r of an edge seed, and the sampling fills
+// what they leave, at least r from all of them. A background grid of cubes of side r / sqrt(3) (each holds one seed at
+// most) takes darts in random live cubes; then every cube no seed's ball covers whole is split in eight and the darts
+// go on among the parts, down to a 64th of the side. Cubes the surface may cross take darts only at points inside the
+// material (a ray decides). Equal seeds give equal samples. The seeds are interior seeds of `material`, with `radius`
+// as their radius.
 //
 // outside_seeds(domain, margin, spacing) gives seeds on a box `margin` beyond the domain's, at
 // most `spacing` apart: outside seeds that bound every cell. They keep clear of the material
