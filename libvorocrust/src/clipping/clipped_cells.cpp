@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "clipping/edge_seeds.hpp"
 #include "clipping/poisson_disk_seeds.hpp"
 #include "core/c_format.hpp"
 #include "core/split_mix.hpp"
@@ -101,7 +102,8 @@ ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& optio
     for (std::int32_t material = 1; material <= materials; ++material) {
       // The first material draws from the run's seed itself, the others from streams of it.
       const std::uint64_t stream = material == 1 ? options.seed : SplitMix64::stream(options.seed, material)();
-      std::vector<Seed> placed;
+      std::vector<Seed> placed =
+          reflex_edge_seeds(domain, material, options.radius, options.sharp_angle_degrees, stream);
       std::copy_if(lattice.begin(), lattice.end(), std::back_inserter(placed),
                    [&](const Seed& s) { return s.region == material; });
       for (Seed& s : poisson_disk_seeds(domain, material, options.radius, stream, placed)) all.push_back(s);

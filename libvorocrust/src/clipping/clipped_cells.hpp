@@ -3,8 +3,9 @@
 // Contract of clipped_cells(domain, options, phases): every region of `domain` but the outside
 // (label 0) is a material, meshed with seeds of its own.
 // - seeds: options.given where there are any (sorted by material, their order kept within
-//   each); else InteriorMode::Random gives Ebeida and Mitchell's maximal Poisson-disk seeds at
-//   options.radius in each material (poisson_disk_seeds.hpp, phase "interior seeds"); Lattice a
+//   each); else first Ebeida and Mitchell's seeds on each material's reflex sharp edges
+//   (edge_seeds.hpp: r / sqrt(2) apart, kind Surface, never moved), then InteriorMode::Random
+//   gives their maximal Poisson-disk seeds at options.radius in each material (poisson_disk_seeds.hpp, phase "interior seeds"); Lattice a
 //   cubic lattice of that spacing, the points inside the materials, each moved by up to a
 //   thousandth of the spacing (ties of a perfect lattice are not decided), and Poisson-disk
 //   seeds where it leaves room (a thin part between its points); Cvt the Poisson-disk seeds (or
@@ -35,6 +36,8 @@ struct ClippedOptions {
   double radius = 0;  // the seeds' Poisson-disk radius, or the lattice's spacing
   InteriorMode mode = InteriorMode::Random;
   int cvt_iterations = 20;
+  // Reflex edges whose faces' normals turn by more than this take seeds (edge_seeds.hpp).
+  double sharp_angle_degrees = 30;
   std::uint64_t seed = 0;
   int threads = 0;
   // Seeds given instead of sampled (each inside its material; `mode` Cvt still moves them).

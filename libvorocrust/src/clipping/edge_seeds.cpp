@@ -143,8 +143,12 @@ std::vector<Seed> reflex_edge_seeds(const SurfaceMesh& domain, std::int32_t mate
   // A seed exactly on the surface would put Voronoi vertices on it, ties the clipping's side tests
   // cannot settle: each moves into the material by a thousandth of r_e, which keeps its edge within
   // its cell up to that much.
+  SplitMix64 jitter = SplitMix64::stream(seed, topology.num_edges());
   const auto add = [&](const Point& p, const Point& inward) {
-    const Point q = p + kInset * r_e * inward.normalized();
+    // The way in turned a little at random: an end's way in may lie in a side's plane, and a
+    // seed in the plane of input faces meets their bisectors in ties.
+    const Point turn(jitter.unit() - 0.5, jitter.unit() - 0.5, jitter.unit() - 0.5);
+    const Point q = p + kInset * r_e * (inward.normalized() + 0.5 * turn).normalized();
     if (locate.region_of(q) != material) return false;
     placed.add(p);
     seeds.push_back({q, material, r_e, SeedKind::Surface});

@@ -11,12 +11,11 @@
 //   left (maximal Poisson-disk sampling of the edges at r / sqrt(2)). Edge seeds are then at least
 //   r / sqrt(2) apart, and a seed farther than r from all of them is at least r / sqrt(2) from
 //   every reflex edge: each point of the edge lies in an edge seed's cell.
-// - The seeds are `material`'s, kind Surface (they lie on the surface), with radius r / sqrt(2);
+// - Each seed moves into the material by a thousandth of r / sqrt(2), in a direction turned a
+//   little at random from the faces' inward normals: a seed on the surface, or in the plane of
+//   an input face, would put ties in the clipping's side tests. A seed whose way in leaves the
+//   material is not placed. The seeds are `material`'s, kind Surface, with radius r / sqrt(2);
 //   equal seeds give equal samples.
-//
-// Not yet part of the clipped pipeline: with these seeds, clip_cells stops on sandia_bracket at
-// radius 4 ("the part of the face between the cells of seeds 37 and 49 inside the material does
-// not close"), whatever their inset; the L-prism test holds.
 #pragma once
 
 #include <cstdint>

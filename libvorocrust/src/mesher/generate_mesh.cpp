@@ -266,6 +266,7 @@ MeshResult run_clipped(const SurfaceMesh& model, const MeshOptions& options, con
   clipped.radius = std::isfinite(options.max_size) ? options.max_size : bounding_diagonal(input) / 20;
   clipped.mode = options.interior;
   clipped.cvt_iterations = options.cvt_iterations;
+  clipped.sharp_angle_degrees = options.sharp_angle();
   clipped.seed = options.seed;
   clipped.threads = options.threads;
   if (!options.seeds_file.empty()) clipped.given = phase("reading seeds", [&] { return given_seeds(options.seeds_file, input); });
