@@ -280,14 +280,25 @@ class Clipped(unittest.TestCase):
         self.assertIn("--method 'clipped'", r.stderr)
 
     def test_given_seeds(self):
-        """--seeds: a run's own seeds.csv given back makes the same mesh, byte for byte; --interior
-        cvt moves given seeds; a seed outside the region it names is refused, naming it."""
+        """--seeds: a run's own seeds.csv given back meshes those seeds, each moved by at most a
+        thousandth of the distance to its nearest (test_a_grid_of_given_seeds says why), the same
+        way on every run; --interior cvt moves given seeds; a seed outside the region it names is
+        refused, naming it."""
         out, report = self.mesh("sandia_cube_test_02.obj", name="sampled")
         seeds_csv = os.path.join(out, "seeds.csv")
-        again, _ = self.mesh("sandia_cube_test_02.obj", "--seeds", seeds_csv, name="given")
+        again, again_report = self.mesh("sandia_cube_test_02.obj", "--seeds", seeds_csv, name="given")
+        twice, _ = self.mesh("sandia_cube_test_02.obj", "--seeds", seeds_csv, name="twice")
         for name in ("mesh.vtu", "seeds.csv"):
-            with open(os.path.join(out, name), "rb") as a, open(os.path.join(again, name), "rb") as b:
+            with open(os.path.join(again, name), "rb") as a, open(os.path.join(twice, name), "rb") as b:
                 self.assertEqual(a.read(), b.read(), name)
+        self.assertEqual(again_report["cells"]["cells"], report["cells"]["cells"])
+        sampled, labels = read_seeds(seeds_csv)
+        given, given_labels = read_seeds(os.path.join(again, "seeds.csv"))
+        self.assertEqual(labels, given_labels)
+        inside = numpy.array(labels) > 0
+        nearest, _ = cKDTree(sampled[inside]).query(sampled[inside], k=2)
+        moved = numpy.linalg.norm(given[inside] - sampled[inside], axis=1)
+        self.assertTrue((moved <= 1e-3 * numpy.sqrt(3) * nearest[:, 1] * (1 + 1e-9)).all())
         moved, moved_report = self.mesh("sandia_cube_test_02.obj", "--seeds", seeds_csv, "--interior", "cvt",
                                         "--cvt-iterations", "3", name="moved")
         self.assertEqual(moved_report["cells"]["cells"], report["cells"]["cells"])
@@ -309,6 +320,26 @@ class Clipped(unittest.TestCase):
                 "--seeds", seeds_csv)
         self.assertEqual(r.returncode, 2, r.stderr)
         self.assertIn("--method 'clipped'", r.stderr)
+
+    def test_a_grid_of_given_seeds(self):
+        """A grid of seeds given for a box of two materials: every input face and the interface lie
+        on the grid's bisectors, and Voronoi edges of four cells cross the input's edges. Each seed
+        moves by at most a thousandth of the spacing (so the ties go), and the materials fill their
+        regions with closed cells."""
+        h = 25.0
+        grid = [(x, y, z) for z in numpy.arange(h / 2, 100, h) for y in numpy.arange(h / 2, 250, h)
+                for x in numpy.arange(h / 2, 500, h)]
+        given = os.path.join(self.dir, "grid.csv")
+        with open(given, "w") as f:
+            f.write("x,y,z,label,radius,kind\n")
+            for x, y, z in grid:
+                f.write("%r,%r,%r,%d,%r,interior\n" % (x, y, z, 1 if z < 50 else 2, h))
+        out, _, _ = self.check_materials("sandia_non_manifold_box.obj", "--seeds", given)
+        seeds, _ = read_seeds(os.path.join(out, "seeds.csv"))
+        material = seeds[: len(grid)]
+        moved = numpy.linalg.norm(material - numpy.array(grid), axis=1)
+        self.assertLessEqual(moved.max(), 1e-3 * h * numpy.sqrt(3) * (1 + 1e-9))
+        self.assertGreater(moved.min(), 0)
 
     def test_inputs_it_cannot_clip_are_refused(self):
         r = run("mesh", os.path.join(MODELS, "gmsh_terrain.stl"), "-o", os.path.join(self.dir, "t"),

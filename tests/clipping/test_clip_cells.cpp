@@ -203,6 +203,35 @@ TEST(ClipCells, CellsAboutACavityAreNotConvexAndStillAddUp) {
   EXPECT_GT(stats.holes, 0u);
 }
 
+// One layer of seeds low in the cube: their cells are columns, neighbours at every height, so the
+// top triangles are cut among them as among neighbours, yet the top is nearer the outside seeds a
+// tenth above it than any seed. The clipping reports the top uncovered (clipped_cells then moves
+// the outside seeds away); with the outside seeds far away the same seeds clip to the cube.
+TEST(ClipCells, SurfaceNearerOutsideSeedsIsUncovered) {
+  const Domain d = box_domain(Point::Zero(), Point::Ones());
+  std::mt19937_64 random(8);
+  std::uniform_real_distribution<double> move(-1e-3, 1e-3);
+  for (const double margin : {0.1, 3.0}) {
+    std::vector<Seed> seeds;
+    for (int i = 0; i < 4; ++i) {
+      for (int j = 0; j < 4; ++j) {
+        seeds.push_back({Point(0.125 + 0.25 * i + move(random), 0.125 + 0.25 * j + move(random), 0.2 + move(random)), 1,
+                         0, SeedKind::Interior});
+      }
+    }
+    for (const Seed& s : seeds_in(d, 0, margin, 4)) seeds.push_back(s);
+    ClippingStats stats;
+    const VoronoiMesh clipped = clipping::clip_cells(compute_cells(seeds), d.surface, &stats);
+    if (margin < 1) {
+      EXPECT_GE(stats.uncovered_triangles, 2u);
+      EXPECT_TRUE(clipped.cells.empty());
+    } else {
+      EXPECT_EQ(stats.uncovered_triangles, 0u);
+      expect_clipped(d, seeds, clipped);
+    }
+  }
+}
+
 TEST(ClipCells, IsTheSameOnEveryRun) {
   const Domain d = box_domain(Point::Zero(), Point::Ones());
   const std::vector<Seed> seeds = seeds_in(d, 200, 1.0, 9);

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <span>
 #include <string>
@@ -94,8 +95,14 @@ class RestrictedCells {
     sites_.reserve(voronoi.cells.size());
     for (const VoronoiCell& c : voronoi.cells) sites_.push_back(c.site);
     neighbours_.resize(voronoi.cells.size());
-    for (const VoronoiFace& f : voronoi.faces) {
-      if (f.neighbour == kNoCell) continue;
+    beyond_.resize(voronoi.cells.size());
+    for (std::size_t face = 0; face < voronoi.faces.size(); ++face) {
+      const VoronoiFace& f = voronoi.faces[face];
+      if (f.neighbour == kNoCell) {
+        const FaceGeometry g = face_geometry(voronoi, face);
+        beyond_[static_cast<std::size_t>(f.owner)].push_back({g.normal, g.normal.dot(g.centroid)});
+        continue;
+      }
       neighbours_[static_cast<std::size_t>(f.owner)].push_back(static_cast<CellId>(f.neighbour));
       neighbours_[static_cast<std::size_t>(f.neighbour)].push_back(static_cast<CellId>(f.owner));
     }
@@ -116,7 +123,8 @@ class RestrictedCells {
 
   bool meshes(std::int32_t region) const { return diagrams_.count(region) > 0; }
 
-  std::vector<Piece> pieces(std::uint32_t t) const {
+  // A triangle's parts in the cells, or none where part of it lies in an outside seed's cell.
+  std::optional<std::vector<Piece>> pieces(std::uint32_t t) const {
     const Triangle& tri = domain_.triangles[t];
     Polygon triangle(3);
     for (int k = 0; k < 3; ++k) {
@@ -129,11 +137,13 @@ class RestrictedCells {
     if (!meshes(first)) std::swap(first, second);
     std::vector<Piece> result;
     for (auto& [cell, polygon] : walk(t, triangle, first)) {
+      if (reaches_outside(cell, polygon)) return std::nullopt;
       if (!meshes(second)) {
         result.push_back({t, cell, std::move(polygon)});
         continue;
       }
       for (auto& [other, part] : walk(t, polygon, second)) {
+        if (reaches_outside(other, part)) return std::nullopt;
         result.push_back({t, cell, part, other, false});
         result.push_back({t, other, std::move(part), cell, true});
       }
@@ -177,6 +187,19 @@ class RestrictedCells {
       result.emplace_back(c, std::move(polygon));
     }
     return result;
+  }
+
+  // Whether a part of cell c's polygon lies beyond one of c's faces toward an outside seed:
+  // nearer that seed than c's, where only a larger margin of outside seeds gives the surface its
+  // cells. Cells only meet their material neighbours in the walk, so this is the test that sees it.
+  bool reaches_outside(CellId c, const Polygon& polygon) const {
+    for (const Plane& plane : beyond_[c]) {
+      const double reach = std::abs(plane.offset - plane.normal.dot(sites_[c]));
+      for (const Corner& k : polygon) {
+        if (plane.normal.dot(k.p) - plane.offset > 1e-9 * reach) return true;
+      }
+    }
+    return false;
   }
 
   // Positive where p is nearer cell hi's seed than cell lo's (lo < hi).
@@ -298,6 +321,11 @@ class RestrictedCells {
   std::vector<Point> sites_;
   std::map<std::int32_t, std::unique_ptr<Diagram>> diagrams_;
   std::vector<std::vector<CellId>> neighbours_;
+  struct Plane {
+    Point normal;  // out of the cell
+    double offset = 0;
+  };
+  std::vector<std::vector<Plane>> beyond_;  // each cell's faces toward outside seeds
 };
 
 // Whether a triangle's pieces make up its whole area (to 1e-9): no part of it lies in a cell the
@@ -923,13 +951,15 @@ VoronoiMesh clip_cells(const VoronoiMesh& voronoi, const SurfaceMesh& domain, Cl
     interfaces |= restricted.meshes(r.back) && restricted.meshes(r.front);
   }
   std::vector<std::vector<Piece>> per_triangle(boundary.size());
-  tbb::parallel_for(std::size_t{0}, boundary.size(),
-                    [&](std::size_t i) { per_triangle[i] = restricted.pieces(boundary[i]); });
+  std::vector<char> uncovered(boundary.size(), 0);
+  tbb::parallel_for(std::size_t{0}, boundary.size(), [&](std::size_t i) {
+    std::optional<std::vector<Piece>> pieces = restricted.pieces(boundary[i]);
+    uncovered[i] = !pieces || !covered(domain, boundary[i], *pieces);
+    if (pieces) per_triangle[i] = std::move(*pieces);
+  });
   ClippingStats local;
   ClippingStats& figures = stats ? *stats : local;
-  for (std::size_t i = 0; i < boundary.size(); ++i) {
-    if (!covered(domain, boundary[i], per_triangle[i])) ++figures.uncovered_triangles;
-  }
+  figures.uncovered_triangles += static_cast<std::size_t>(std::count(uncovered.begin(), uncovered.end(), 1));
   if (figures.uncovered_triangles) return {};
   std::vector<Piece> pieces;
   for (std::vector<Piece>& p : per_triangle) {

@@ -1,6 +1,7 @@
 #include "clipping/clipped_cells.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iterator>
 
@@ -8,6 +9,7 @@
 #include "clipping/poisson_disk_seeds.hpp"
 #include "core/c_format.hpp"
 #include "core/split_mix.hpp"
+#include "geometry/point_cloud.hpp"
 #include "seeds/locate_regions.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/error.hpp"
@@ -16,11 +18,34 @@ namespace vorocrust::clipping {
 namespace {
 
 // A cubic lattice's Voronoi vertices are each shared by eight cells and its edges by four, and a
-// CAD model's faces often lie on its bisectors: a clipping decided by the side of the surface
-// each point lies on cannot settle such ties. Each point moves by up to a thousandth of the
-// spacing, in a direction drawn from the run's random seed: no four seeds on a circle, no face
-// on a bisector, and faces of at most that size where the lattice had an edge.
-constexpr double kLatticeJitter = 1e-3;
+// CAD model's faces often lie on its bisectors (and grids of given seeds have the same ties): a
+// clipping decided by the side of the surface each point lies on cannot settle such ties, and
+// Voro++'s diagram, whose points compute_cells welds within up to 1e-6 of a cell's size, has
+// already settled them its own way. Each seed moves by up to a thousandth of its spacing, in a
+// direction drawn from the run's random seed: no four seeds on a circle, no face on a bisector,
+// and faces of at most that size where the seeds had a common edge.
+constexpr double kJitter = 1e-3;
+
+// Item `item`'s move, in [-1/2, 1/2]^3, drawn from the run's seed.
+Point jitter(std::uint64_t seed, std::uint64_t item) {
+  SplitMix64 random = SplitMix64::stream(seed, item);
+  return {random.unit() - 0.5, random.unit() - 0.5, random.unit() - 0.5};
+}
+
+// Given seeds moved as the lattice's are, each by a thousandth of the distance to its nearest
+// other seed: a grid of seeds given for a box-shaped part has every tie above.
+std::vector<Seed> jittered(std::vector<Seed> seeds, std::uint64_t seed) {
+  const std::vector<Seed> original = seeds;
+  const SeedCloud cloud{&original};
+  const StaticKdTree<SeedCloud> tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    std::array<std::uint32_t, 2> index{};
+    std::array<double, 2> squared{};
+    if (tree.knnSearch(original[i].position.data(), 2, index.data(), squared.data()) < 2) continue;
+    seeds[i].position += 2 * kJitter * std::sqrt(squared[1]) * jitter(seed, i);
+  }
+  return seeds;
+}
 
 // The lattice's points inside the materials, each with its region.
 std::vector<Seed> lattice_seeds(const SurfaceMesh& domain, double spacing, std::uint64_t seed) {
@@ -35,10 +60,8 @@ std::vector<Seed> lattice_seeds(const SurfaceMesh& domain, double spacing, std::
   for (int z = 0; z <= n.z(); ++z) {
     for (int y = 0; y <= n.y(); ++y) {
       for (int x = 0; x <= n.x(); ++x) {
-        SplitMix64 random =
-            SplitMix64::stream(seed, static_cast<std::uint64_t>((z * (n.y() + 1) + y) * (n.x() + 1) + x));
-        const Point jitter(random.unit() - 0.5, random.unit() - 0.5, random.unit() - 0.5);
-        const Point p = lo + spacing * (Point(x, y, z) + 2 * kLatticeJitter * jitter);
+        const Point move = jitter(seed, static_cast<std::uint64_t>((z * (n.y() + 1) + y) * (n.x() + 1) + x));
+        const Point p = lo + spacing * (Point(x, y, z) + 2 * kJitter * move);
         const std::int32_t region = locate.region_of(p);
         if (region > 0) seeds.push_back({p, region, spacing, SeedKind::Interior});
       }
@@ -91,7 +114,7 @@ ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& optio
   for (const RegionPair& r : domain.face_regions) materials = std::max({materials, r.back, r.front});
   std::vector<Seed> seeds = phases("interior seeds", [&] {
     if (!options.given.empty()) {
-      std::vector<Seed> given = options.given;
+      std::vector<Seed> given = jittered(options.given, options.seed);
       std::stable_sort(given.begin(), given.end(), [](const Seed& a, const Seed& b) { return a.region < b.region; });
       return given;
     }

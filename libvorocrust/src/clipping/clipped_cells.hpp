@@ -40,7 +40,8 @@ struct ClippedOptions {
   double sharp_angle_degrees = 30;
   std::uint64_t seed = 0;
   int threads = 0;
-  // Seeds given instead of sampled (each inside its material; `mode` Cvt still moves them).
+  // Seeds given instead of sampled (each inside its material; each moved by a thousandth of the
+  // distance to its nearest, as the lattice is; `mode` Cvt still moves them).
   std::vector<Seed> given;
   // Called with the material seeds before their cells, to refuse a run that would not fit.
   std::function<void(const std::vector<Seed>&)> before_cells;

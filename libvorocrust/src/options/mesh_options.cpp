@@ -290,7 +290,8 @@ const std::array<OptionSpec, 22> kSpecs = {{
      .label = "Seeds file",
      .help = "With `method` 'clipped': the seeds, a CSV file as OUTDIR/seeds.csv is written (x,y,z,label,radius,kind), "
              "instead of sampled ones; each seed of a material must lie in its region, outside seeds (label 0) are "
-             "ignored, and `interior` 'cvt' moves them by Lloyd iterations",
+             "ignored, and `interior` 'cvt' moves them by Lloyd iterations; each moves by at most a thousandth of the "
+             "distance to its nearest, as the lattice's points do, so that a grid's ties with the input's faces go",
      .section = "1",
      .group = "Domain",
      .default_value = std::monostate{},
