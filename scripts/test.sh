@@ -20,8 +20,8 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_
   -DVOROCRUST_SANITIZE=address,undefined -DVOROCRUST_BUILD_PYTHON=OFF -DVOROCRUST_BUILD_MESHLAB_PLUGIN=OFF \
   -DVOROCRUST_BUILD_CLI=OFF -DVOROCRUST_BUILD_BENCH=OFF -DVOROCRUST_WERROR=OFF
 cmake --build build-asan -j "$(nproc)"
-# The six heaviest unit tests (whole models through the interior sampler, the growing cells and the
-# smoothing: 35 to 70 s each under the sanitizers) run in the main suite only; the sanitizers see
-# those stages through the others.
+# The twelve heaviest unit tests (whole models through the interior sampler, the growing cells, the
+# smoothing, the refinement and a brute-force check of the boundary samples: 25 to 70 s each under
+# the sanitizers) run in the main suite only; the sanitizers see those stages through the others.
 (cd build-asan && ctest --output-on-failure --timeout 1200 -j 2 -L quick \
-  -E '^(SampleInterior\.(CvtMovesInteriorSeedsTowardTheirCentroidsAndKeepsTheSurface|SameSeedSameSeedsOnOneThread|LatticeGivesCubesInTheDeepInterior|RadiiAreLipschitzAndSeedsOutsideEachOthersBalls)|GrowingCells\.AddedSeedsGiveTheCellsOfAllSeedsOfAWholeRun|SmoothPatches\.BoundingRoundsKeepACoarseBentSurfaceNearItsInput)$')
+  -E '^(SampleInterior\.(CvtMovesInteriorSeedsTowardTheirCentroidsAndKeepsTheSurface|SameSeedSameSeedsOnOneThread|LatticeGivesCubesInTheDeepInterior|RadiiAreLipschitzAndSeedsOutsideEachOthersBalls|RandomSeedsStayOutOfEveryBallAndKeepTheSurface)|GrowingCells\.(AddedSeedsGiveTheCellsOfAllSeedsOfAWholeRun|LongCellsAreTheMeshCellsAboveTheBound|CutFacesAreTheMeshFacesWithTheirSkewness)|SmoothPatches\.(BoundingRoundsKeepACoarseBentSurfaceNearItsInput|BunnyGetsFlatterPatches)|RefineBalls\.SmallerLipschitzGivesMoreBalls|BoundarySamples\.NearestNonCosmoothSampleOnACurvedPatchMatchesABruteForce)$')

@@ -113,6 +113,8 @@ class Clipped(unittest.TestCase):
         seeds, labels = read_seeds(os.path.join(out, "seeds.csv"))
         material = numpy.array(labels) > 0
         self.assertEqual(grid.GetNumberOfCells(), int(material.sum()))
+        # No balls, so no (empty) balls files.
+        self.assertFalse({"balls.csv", "balls.vtk"} & set(os.listdir(out)))
         clipping = report["clipping"]
         self.assertGreater(clipping["clipped_cells"], 0)
         self.assertLessEqual(clipping["clipped_cells"], grid.GetNumberOfCells())

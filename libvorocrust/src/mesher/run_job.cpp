@@ -140,7 +140,8 @@ void write_outputs(const MeshResult& result, const MeshOptions& options, const R
   const auto wanted = [&](OutputFormat f) {
     return options.writes(f) && options.stop_after >= output_format(f).needs;
   };
-  if (wanted(OutputFormat::Balls)) {
+  // A clipped mesh has no balls: no empty balls.csv beside it.
+  if (wanted(OutputFormat::Balls) && options.method != Method::Clipped) {
     write_balls_csv(result.balls, staged / "balls.csv");
     write_balls_vtk(result.balls, staged / "balls.vtk");
     // The surface the balls cover, when smoothing changed it: `check-balls` verifies against it.

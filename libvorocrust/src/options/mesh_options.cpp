@@ -63,6 +63,17 @@ void set_bound(MeshOptions& o, const OptionValue& v) {
   o.*bound = v.index() == 0 ? kInf : std::get<double>(v);
 }
 
+// A file that is none until given: unset in the table.
+template <std::filesystem::path MeshOptions::*file>
+OptionValue get_file(const MeshOptions& o) {
+  if ((o.*file).empty()) return std::monostate{};
+  return (o.*file).string();
+}
+template <std::filesystem::path MeshOptions::*file>
+void set_file(MeshOptions& o, const OptionValue& v) {
+  o.*file = v.index() == 0 ? std::filesystem::path() : std::filesystem::path(std::get<std::string>(v));
+}
+
 // The table. Help texts say what an option does in the paper's words and name no flag: each front
 // end adds its own spelling, the default and the range (default_text, range_text).
 const std::array<OptionSpec, 22> kSpecs = {{
@@ -138,15 +149,8 @@ const std::array<OptionSpec, 22> kSpecs = {{
      .group = "Surface",
      .default_value = std::monostate{},
      .unset_means = "none",
-     .get =
-         [](const MeshOptions& o) -> OptionValue {
-           if (o.sizing_file.empty()) return std::monostate{};
-           return o.sizing_file.string();
-         },
-     .set =
-         [](MeshOptions& o, const OptionValue& v) {
-           o.sizing_file = v.index() == 0 ? std::filesystem::path() : std::filesystem::path(std::get<std::string>(v));
-         }},
+     .get = get_file<&MeshOptions::sizing_file>,
+     .set = set_file<&MeshOptions::sizing_file>},
     {.name = "smoothing_iterations",
      .kind = OptionKind::Integer,
      .label = "Smoothing iterations",
@@ -296,15 +300,8 @@ const std::array<OptionSpec, 22> kSpecs = {{
      .group = "Domain",
      .default_value = std::monostate{},
      .unset_means = "none",
-     .get =
-         [](const MeshOptions& o) -> OptionValue {
-           if (o.seeds_file.empty()) return std::monostate{};
-           return o.seeds_file.string();
-         },
-     .set =
-         [](MeshOptions& o, const OptionValue& v) {
-           o.seeds_file = v.index() == 0 ? std::filesystem::path() : std::filesystem::path(std::get<std::string>(v));
-         }},
+     .get = get_file<&MeshOptions::seeds_file>,
+     .set = set_file<&MeshOptions::seeds_file>},
     {.name = "max_aspect_ratio",
      .kind = OptionKind::Real,
      .label = "Largest cell aspect ratio",

@@ -38,7 +38,7 @@ const std::array<OutputFormatSpec, 11> kOutputs = {{
     {OutputFormat::SurfacePly, "ply", kPly, Stage::Surface, false,
      "the conforming surface, each face with the regions it separates"},
     {OutputFormat::Balls, "balls", kBalls, Stage::Balls, false,
-     "the protecting balls, and the smoothed input they cover when smoothing changed it"},
+     "the protecting balls, and the smoothed input they cover when smoothing changed it (none for a clipped mesh)"},
     {OutputFormat::QualitySvg, "svg", kSvg, Stage::Surface, false, "the histograms of triangle and cell quality"},
     {OutputFormat::ReportHtml, "html", kHtml, Stage::Surface, false,
      "a page to open in a browser: the run's figures and quality tables, pictures of the surface, of a cut "
