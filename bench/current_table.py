@@ -40,7 +40,7 @@ STAGES = [
     ("seeds", ("slivers", "surface seeds", "surface quality", "cap seeds")),
     ("interior", ("interior seeds",)),
     ("cells", ("cells", "clipping", "skew repair", "aspect splits", "assembly")),
-    ("quality", ("cell quality",)),
+    ("quality", ("cell quality", "dual tetrahedra")),
     ("writing", ("writing",)),
 ]
 BEGIN, END = "<!-- current table -->", "<!-- end of current table -->"

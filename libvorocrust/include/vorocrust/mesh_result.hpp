@@ -48,6 +48,9 @@ struct VOROCRUST_API MeshResult {
   VoronoiMesh cells;
   // What cutting the cells to the input did, for MeshOptions::method Clipped.
   std::optional<ClippingStats> clipping;
+  // The tetrahedra dual to the clipped cells and their shape, for MeshOptions::method Clipped
+  // (measured before welding, which joins Voronoi vertices).
+  std::optional<DualTetFigures> dual_tets;
   // What welding short edges did, for MeshOptions::weld above 0.
   std::optional<WeldStats> welding;
   // The cells measured as the paper's section 3 does (aspect ratio, volume, faces, edges).

@@ -130,6 +130,18 @@ struct VOROCRUST_API WeldStats {
   double shortest_edge_after = 0;
 };
 
+// The tetrahedra dual to a clipped mesh (Yan et al. 2011, 5.2: the primal Delaunay tetrahedra
+// whose circumcentre lies inside a material) and their shape as Yan et al.'s Table 2 gives it.
+struct VOROCRUST_API DualTetFigures {
+  std::size_t tets = 0;
+  std::size_t degenerate_points = 0;  // Voronoi vertices of five cells or more, without a tetrahedron
+  double volume = 0;                  // the tetrahedra's: how much of the materials they fill
+  double mean_min_dihedral = 0, min_min_dihedral = 0;  // Q1, degrees
+  double max_max_dihedral = 0;                         // Q2, degrees
+  double mean_radius_ratio = 0, min_radius_ratio = 0;  // Q3 = 3 r_in / r_circ
+  double mean_q4 = 0, min_q4 = 0;                      // Q4 = 12 (9 V^2)^(1/3) / sum of squared edges
+};
+
 struct VOROCRUST_API FeatureCounts {
   std::size_t sharp_edges = 0, corners = 0, creases = 0, patches = 0;
   std::size_t faces_after_smoothing = 0;

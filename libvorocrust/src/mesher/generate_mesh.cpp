@@ -11,6 +11,7 @@
 #include "cells/conforming_cells.hpp"
 #include "cells/weld_short_edges.hpp"
 #include "clipping/clipped_cells.hpp"
+#include "clipping/dual_tets.hpp"
 #include "core/c_format.hpp"
 #include "core/memory.hpp"
 #include "core/phases.hpp"
@@ -275,6 +276,7 @@ MeshResult run_clipped(const SurfaceMesh& model, const MeshOptions& options, con
   result.seeds = std::move(mesh.seeds);
   result.cells = std::move(mesh.cells);
   result.clipping = mesh.stats;
+  result.dual_tets = phase("dual tetrahedra", [&] { return clipping::measure_dual_tets(result.cells); });
   if (options.weld > 0) {
     result.welding = phase("welding", [&] {
       return cells::weld_short_edges(result.cells, std::vector<double>(result.cells.cells.size(), clipped.radius),

@@ -479,6 +479,23 @@ std::string run_report_json(const RunReport& report, int indent) {
                          {"clipped_faces", c.clipped_faces},   {"dropped_faces", c.dropped_faces},
                          {"holes", c.holes}};
     }
+    if (m.dual_tets) {
+      const DualTetFigures& t = *m.dual_tets;
+      doc["dual_tets"] = {{"tets", t.tets},
+                          {"degenerate_points", t.degenerate_points},
+                          {"volume", t.volume},
+                          {"mean_min_dihedral", t.mean_min_dihedral},
+                          {"min_min_dihedral", t.min_min_dihedral},
+                          {"max_max_dihedral", t.max_max_dihedral},
+                          {"mean_radius_ratio", t.mean_radius_ratio},
+                          {"min_radius_ratio", t.min_radius_ratio},
+                          {"mean_q4", t.mean_q4},
+                          {"min_q4", t.min_q4},
+                          {"definition",
+                           "the Delaunay tetrahedra of the seeds whose circumcentre lies inside their material "
+                           "(Yan et al. 2011, 5.2); dihedral angles in degrees, radius ratio 3 r_in / r_circ, "
+                           "q4 = 12 (9 V^2)^(1/3) / sum of squared edge lengths (their Table 2)"}};
+    }
     if (m.welding) {
       const WeldStats& w = *m.welding;
       doc["welding"] = {{"fraction", w.fraction},
