@@ -183,9 +183,11 @@ class Clipped(unittest.TestCase):
 
     def test_dual_tetrahedra(self):
         """The report's dual tetrahedra (Yan et al. 5.2) are SciPy's Delaunay tetrahedra of the seeds
-        whose circumcentre VTK finds inside the model, with the same Q4; Lloyd iterations make
-        them better shaped than those of the Poisson-disk seeds."""
-        mean_q4 = {}
+        whose circumcentre VTK finds inside the model, with the same Q4. Lloyd iterations make
+        them better shaped than those of the Poisson-disk seeds, and their constrained phase holds
+        the boundary cells' seeds a thousandth of the radius inside the surface, so that the
+        tetrahedra reach it."""
+        mean_q4, fill = {}, {}
         for mode in ("random", "cvt"):
             out, report = self.mesh("cgal_joint.off", "--interior", mode, "--cvt-iterations", "10", name=mode)
             figures = report["dual_tets"]
@@ -209,9 +211,23 @@ class Clipped(unittest.TestCase):
             self.assertTrue(0 < figures["min_q4"] <= figures["mean_q4"] <= 1)
             self.assertTrue(0 < figures["min_min_dihedral"] <= figures["mean_min_dihedral"] < 70.53)
             mean_q4[mode] = figures["mean_q4"]
+            fill[mode] = figures["volume"] / report["regions"][1]["volume"]
+            if mode == "cvt":
+                surface = self.model_surface(out)
+                distance = vtk.vtkImplicitPolyDataDistance()
+                distance.SetInput(surface)
+                kinds = [k for k, label in zip(read_kinds(os.path.join(out, "seeds.csv")), labels) if label > 0]
+                held = [p for p, k in zip(sites, kinds) if k == "surface"]
+                self.assertGreater(len(held), 50)
+                bounds = numpy.array(surface.GetBounds())
+                radius = numpy.linalg.norm(bounds[1::2] - bounds[::2]) / 20  # the default max_size
+                for p in held:
+                    self.assertLess(abs(distance.EvaluateFunction(p)), 1.5e-3 * radius)
             print("\n  %s: %d tetrahedra (%d by SciPy), mean Q4 %.4f (%.4f), volume %.6g (%.6g)" % (
                 mode, figures["tets"], inside.sum(), figures["mean_q4"], q4.mean(), figures["volume"], volume.sum()))
-        self.assertGreater(mean_q4["cvt"], mean_q4["random"] + 0.01)  # 0.839 and 0.815 when written
+        self.assertGreater(mean_q4["cvt"], mean_q4["random"])  # 0.828 and 0.815 when written
+        self.assertGreater(fill["cvt"], 0.9)  # 0.93; the Poisson-disk seeds' 0.71
+        self.assertLess(fill["random"], fill["cvt"])
 
     def test_an_ensemble_of_meshes(self):
         a, _ = self.mesh("cgal_joint.off", "--seed", "1", name="a")

@@ -4,11 +4,14 @@
 #include <array>
 #include <cmath>
 #include <iterator>
+#include <limits>
 
 #include "clipping/edge_seeds.hpp"
 #include "clipping/poisson_disk_seeds.hpp"
 #include "core/c_format.hpp"
 #include "core/split_mix.hpp"
+#include "geometry/box_tree.hpp"
+#include "geometry/closest_point.hpp"
 #include "geometry/point_cloud.hpp"
 #include "seeds/locate_regions.hpp"
 #include "vorocrust/cells.hpp"
@@ -107,6 +110,73 @@ Clipping clip(const SurfaceMesh& domain, const std::vector<Seed>& seeds, const C
   }
 }
 
+// The surface of each material, for the seeds Yan et al.'s second phase keeps on it: the point of
+// a material's boundary nearest a point, moved into the material by `inset` along the normal of
+// its face (seeds exactly on an input face would tie with it in the clipping, as edge seeds do).
+class MaterialBoundary {
+ public:
+  explicit MaterialBoundary(const SurfaceMesh& domain) : domain_(domain), tree_(geometry::face_tree(domain)) {}
+
+  Point onto(const Point& p, std::int32_t material, double inset) const {
+    const auto [face, squared] = tree_.nearest(p, [&](std::uint32_t f) {
+      const RegionPair& r = domain_.face_regions[f];
+      if (r.back == r.front || (r.back != material && r.front != material)) return kInfinity;
+      return (closest(p, f) - p).squaredNorm();
+    });
+    if (face == geometry::BoxTree::kNoItem) return p;
+    const Triangle& t = domain_.triangles[face];
+    Point inward = (domain_.vertices[t[1]] - domain_.vertices[t[0]])
+                       .cross(domain_.vertices[t[2]] - domain_.vertices[t[0]])
+                       .normalized();
+    if (domain_.face_regions[face].back == material) inward = -inward;
+    return closest(p, face) + inset * inward;
+  }
+
+ private:
+  static constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  Point closest(const Point& p, std::uint32_t f) const {
+    const Triangle& t = domain_.triangles[f];
+    return geometry::closest_on_triangle(p, domain_.vertices[t[0]], domain_.vertices[t[1]], domain_.vertices[t[2]]);
+  }
+  const SurfaceMesh& domain_;
+  geometry::BoxTree tree_;
+};
+
+// Whether a cell has a face on the surface: toward no cell, or toward another material's.
+bool on_the_surface(const VoronoiMesh& mesh, const VoronoiCell& cell) {
+  return std::any_of(cell.faces.begin(), cell.faces.end(), [&](Index f) {
+    const VoronoiFace& face = mesh.faces[f];
+    return face.neighbour == kNoCell || mesh.cells[static_cast<std::size_t>(face.neighbour)].region != cell.region;
+  });
+}
+
+// Yan et al.'s CVT (their 5.2): Lloyd iterations on the clipped cells, every interior seed to its
+// cell's centroid; after the first half, the seeds of the cells on the surface move onto it (a
+// thousandth of the radius inside) and stay there, each at the point nearest its centroid. Seeds
+// of other kinds (on reflex edges) stay where they are.
+void lloyd_iterations(const SurfaceMesh& domain, std::vector<Seed>& seeds, const ClippedOptions& options) {
+  const RegionLocator locate(domain);
+  const MaterialBoundary boundary(domain);
+  const int free_rounds = (options.cvt_iterations + 1) / 2;
+  std::vector<char> held(seeds.size(), 0);
+  for (int iteration = 0; iteration < options.cvt_iterations; ++iteration) {
+    const Clipping c = clip(domain, seeds, options, nullptr);
+    for (const VoronoiCell& cell : c.cells.cells) {
+      Seed& s = seeds[cell.seed];
+      if (s.kind != SeedKind::Interior && !held[cell.seed]) continue;
+      if (iteration == free_rounds && on_the_surface(c.cells, cell)) {
+        held[cell.seed] = 1;
+        s.kind = SeedKind::Surface;
+      }
+      if (held[cell.seed]) {
+        s.position = boundary.onto(cell.centroid, cell.region, kJitter * options.radius);
+      } else if (locate.region_of(cell.centroid) == cell.region) {
+        s.position = cell.centroid;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& options, Phases& phases) {
@@ -141,19 +211,7 @@ ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& optio
                   {.option = "max_size"});
     }
   }
-  if (options.mode == InteriorMode::Cvt) {
-    phases("cvt", [&] {
-      const RegionLocator locate(domain);
-      for (int iteration = 0; iteration < options.cvt_iterations; ++iteration) {
-        const Clipping c = clip(domain, seeds, options, nullptr);
-        for (const VoronoiCell& cell : c.cells.cells) {
-          Seed& s = seeds[cell.seed];
-          if (s.kind == SeedKind::Interior && locate.region_of(cell.centroid) == cell.region)
-            s.position = cell.centroid;
-        }
-      }
-    });
-  }
+  if (options.mode == InteriorMode::Cvt) phases("cvt", [&] { lloyd_iterations(domain, seeds, options); });
   if (options.before_cells) options.before_cells(seeds);
   Clipping c = clip(domain, seeds, options, &phases);
   return {std::move(c.seeds), std::move(c.cells), c.stats};

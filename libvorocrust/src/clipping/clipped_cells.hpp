@@ -10,9 +10,13 @@
 //   thousandth of the spacing (ties of a perfect lattice are not decided), and Poisson-disk
 //   seeds where it leaves room (a thin part between its points); Cvt the Poisson-disk seeds (or
 //   the given ones) moved by options.cvt_iterations Lloyd iterations on the clipped cells (Yan et
-//   al. 2011, section 5: each seed to its clipped cell's centroid; a centroid outside the
+//   al. 2011, section 5.2: each seed to its clipped cell's centroid; a centroid outside the
 //   material leaves its seed where it was, and seeds of a kind other than Interior, given seeds
-//   on the surface, stay; phase "cvt").
+//   on the surface, stay; phase "cvt"). After the first half of the iterations (rounded up), the
+//   seeds of the cells on the surface (a face toward no cell or another material) become kind
+//   Surface and move to the point of their material's boundary nearest their centroid, a
+//   thousandth of the radius inside, for the rest: Yan et al.'s constrained phase, which puts
+//   seeds on the surface so that the dual tetrahedra reach it.
 // - then each material's Voronoi cells of its seeds and outside seeds 1.5 radii beyond the
 //   domain's box (phase "cells"), cut to the materials (clip_cells.hpp; phase "clipping"). Where
 //   an outside seed is nearer part of the surface than every material seed, the outside seeds

@@ -245,7 +245,8 @@ const std::array<OptionSpec, 22> kSpecs = {{
              "cells not convex; "
              "`interior` 'random' gives Ebeida and Mitchell's maximal Poisson-disk seeds of radius `max_size` "
              "(unset, a twentieth of the input's diagonal), 'cvt' Yan et al.'s Lloyd iterations on the clipped "
-             "cells, 'lattice' a cubic lattice of that spacing)",
+             "cells, the seeds of the cells on the surface moved onto it for the second half, 'lattice' a cubic "
+             "lattice of that spacing)",
      .section = "1",
      .group = "Domain",
      .default_value = std::string("vorocrust"),
