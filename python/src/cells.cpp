@@ -180,6 +180,13 @@ Writes the cells as a VTK XML unstructured grid (mesh.vtu: polyhedron cells, cel
 material, seed, volume, aspect_ratio) that VTK 9.1 and ParaView read; atomically.
 )doc");
   def_writer<Cells>(
+      m, "write_tets", "cells", "path", [](const Cells& c, const auto& p) { write_tets_vtu(*c.mesh, p); }, R"doc(
+Writes the tetrahedra dual to clipped cells (Yan et al. 2011, 5.2: the Delaunay tetrahedra of the
+seeds whose circumcentre lies inside their material) as tets.vtu: a point per cell at its seed
+(point data seed), a tetrahedron per Voronoi vertex inside a material with cell data material,
+min_dihedral, max_dihedral (degrees), radius_ratio and q4. Atomically.
+)doc");
+  def_writer<Cells>(
       m, "write_tough", "cells", "path", [](const Cells& c, const auto& p) { write_tough_mesh(*c.mesh, p); }, R"doc(
 Writes the cells as a TOUGH MESH file (ELEME: name, material, volume, the seed as node; CONNE:
 the two cells, half the seed link on each side, face area, gravity cosine), atomically.

@@ -52,6 +52,7 @@ from ._vorocrust import (  # noqa: F401  (the public interface)
     write_seeds,
     write_surface,
     write_tough,
+    write_tets,
     write_vtu,
 )
 from . import _vorocrust
@@ -62,7 +63,7 @@ __all__ = [
     "__version__", "DEFAULT_OPTIONS", "OPTIONS", "compute_cells", "info", "measure_surface_quality", "merge_surfaces", "mesh",
     "read_exodus", "read_mesh", "read_seeds", "validate", "write_balls", "write_openfoam", "write_exodus", "write_outputs", "write_pflotran",
     "write_tough",
-    "write_files", "write_seeds", "write_surface", "write_vtu", "OUTPUT_FORMATS", "VOLUME_FORMATS",
+    "write_files", "write_seeds", "write_surface", "write_tets", "write_vtu", "OUTPUT_FORMATS", "VOLUME_FORMATS",
     "INTERIOR_MODES", "STAGES", "mesh2d", "PlaneMesh", "PLANE_OPTIONS", "PLANE_FORMATS",
 ]
 
@@ -129,7 +130,7 @@ VOLUME_FORMATS = tuple(name for name, _, _, volume, _ in _vorocrust._OUTPUT_TABL
 # The part of a run each format is written from.
 _FORMAT_PARTS = {"balls": "balls", "seeds": "seeds", "obj": "surface", "ply": "surface", "svg": "run",
                  "html": "run", "report": "run", "vtu": "cells", "openfoam": "cells", "tough": "cells", "pflotran": "cells",
-                 "exodus": "cells"}
+                 "exodus": "cells", "tets": "cells"}
 
 
 def mesh2d(domain, *, output_dir=None, formats=None, thickness=1.0, **options):
@@ -170,7 +171,7 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
 
     formats: names from OUTPUT_FORMATS, each needing its part: "balls" balls, "seeds" seeds,
         "obj" and "ply" surface, "svg", "html" and "report" run (a MeshResult), "vtu", "openfoam",
-        "tough", "pflotran" and "exodus" cells. A format whose part is missing raises UsageError before anything is written.
+        "tough", "pflotran", "exodus" and "tets" (for clipped cells) cells. A format whose part is missing raises UsageError before anything is written.
 
     Every file is written atomically. Returns the paths written, in the order of `formats`.
     """
@@ -196,6 +197,7 @@ def write_files(folder, formats, *, run=None, balls=None, seeds=None, surface=No
         "tough": lambda: write_tough(cells, _at(folder, "MESH")),
         "pflotran": lambda: write_pflotran(cells, _at(folder, "pflotran")),
         "exodus": lambda: write_exodus(cells, _at(folder, "mesh.exo")),
+        "tets": lambda: write_tets(cells, _at(folder, "tets.vtu")),
     }
     written = []
     for name in formats:
@@ -219,7 +221,8 @@ def write_outputs(result, folder, formats=None, cells=None):
     """Writes a run's results into `folder` (created when missing), as `vorocrust mesh` does.
 
     formats: names from OUTPUT_FORMATS ("balls", "seeds", "obj", "ply", "svg", "html", "report",
-        "vtu", "openfoam", "tough", "pflotran", "exodus"); None for every one the run has the parts for. Asking for a part the
+        "vtu", "openfoam", "tough", "pflotran", "exodus", "tets"); None for every one the run has the parts for
+        ("tets" for a clipped run only). Asking for a part the
         run did not make (cells after stop_after="surface") raises UsageError and writes
         nothing.
     cells: the Cells to write the volume formats from, instead of result.cells: e.g.
@@ -231,7 +234,10 @@ def write_outputs(result, folder, formats=None, cells=None):
     parts = {"run": result, "balls": result.balls, "seeds": result.seeds, "surface": result.surface,
              "cells": result.cells if cells is None else cells}
     if formats is None:
-        formats = [name for name in OUTPUT_FORMATS if parts[_FORMAT_PARTS[name]] is not None]
+        # The dual tetrahedra belong to a clipped mesh, as `vorocrust mesh` writes them.
+        clipped = result.report()["options"].get("method") == "clipped"
+        formats = [name for name in OUTPUT_FORMATS
+                   if parts[_FORMAT_PARTS[name]] is not None and (name != "tets" or clipped)]
     return write_files(folder, formats, **parts)
 
 

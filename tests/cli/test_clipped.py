@@ -210,6 +210,7 @@ class Clipped(unittest.TestCase):
             self.assertLess(figures["volume"], report["regions"][1]["volume"])
             self.assertTrue(0 < figures["min_q4"] <= figures["mean_q4"] <= 1)
             self.assertTrue(0 < figures["min_min_dihedral"] <= figures["mean_min_dihedral"] < 70.53)
+            self.check_tets_file(out, figures, seeds)
             mean_q4[mode] = figures["mean_q4"]
             fill[mode] = figures["volume"] / report["regions"][1]["volume"]
             if mode == "cvt":
@@ -228,6 +229,26 @@ class Clipped(unittest.TestCase):
         self.assertGreater(mean_q4["cvt"], mean_q4["random"])  # 0.828 and 0.815 when written
         self.assertGreater(fill["cvt"], 0.9)  # 0.93; the Poisson-disk seeds' 0.71
         self.assertLess(fill["random"], fill["cvt"])
+
+    def check_tets_file(self, out, figures, seeds):
+        """tets.vtu holds the report's tetrahedra: positively oriented on the meshed seeds, with
+        their volume and smallest dihedral angle."""
+        grid = read_vtu(os.path.join(out, "tets.vtu"))
+        self.assertEqual(grid.GetNumberOfCells(), figures["tets"])
+        types = vtk_to_numpy(grid.GetCellTypesArray())
+        self.assertTrue((types == vtk.VTK_TETRA).all())
+        points = vtk_to_numpy(grid.GetPoints().GetData())
+        seed = vtk_to_numpy(grid.GetPointData().GetArray("seed"))
+        self.assertLess(numpy.abs(points - seeds[seed]).max(), 1e-12)
+        tets = points[vtk_to_numpy(grid.GetCells().GetConnectivityArray()).reshape(-1, 4)]
+        signed = numpy.linalg.det(tets[:, 1:] - tets[:, :1]) / 6
+        self.assertGreater(signed.min(), 0)
+        self.assertAlmostEqual(signed.sum() / figures["volume"], 1, delta=1e-9)
+        q1 = vtk_to_numpy(grid.GetCellData().GetArray("min_dihedral"))
+        self.assertAlmostEqual(q1.min(), figures["min_min_dihedral"], delta=1e-9)
+        self.assertAlmostEqual(q1.mean(), figures["mean_min_dihedral"], delta=1e-9)
+        material = vtk_to_numpy(grid.GetCellData().GetArray("material"))
+        self.assertTrue((material == 1).all())
 
     def test_an_ensemble_of_meshes(self):
         a, _ = self.mesh("cgal_joint.off", "--seed", "1", name="a")

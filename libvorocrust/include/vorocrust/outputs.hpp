@@ -23,6 +23,7 @@ enum class OutputFormat {
   Tough,       // MESH: TOUGH's ELEME and CONNE blocks
   Pflotran,    // pflotran/: PFLOTRAN's explicit unstructured grid
   Exodus,      // mesh.exo: Exodus II, a block per material, side sets per patch and interface
+  Tets,        // tets.vtu: the tetrahedra dual to a clipped mesh (Yan et al.)
   Seeds,       // seeds.csv: the whole mesh in compact form
   SurfaceObj,  // surface.obj
   SurfacePly,  // surface.ply
@@ -42,9 +43,9 @@ struct VOROCRUST_API OutputFormatSpec {
 
 template <>
 struct ChoiceNames<OutputFormat> {
-  static constexpr std::array<std::string_view, 11> names = {"vtu",  "openfoam", "tough", "pflotran",
-                                                               "exodus", "seeds", "obj", "ply",
-                                                               "balls", "svg", "html"};
+  static constexpr std::array<std::string_view, 12> names = {"vtu",  "openfoam", "tough", "pflotran",
+                                                               "exodus", "tets", "seeds", "obj",
+                                                               "ply", "balls", "svg", "html"};
 };
 
 VOROCRUST_API std::span<const OutputFormatSpec> output_formats() noexcept;

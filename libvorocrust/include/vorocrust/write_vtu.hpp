@@ -10,6 +10,13 @@
 //
 // `quality`: the mesh's measure_cell_quality, when the caller has it; otherwise it is measured
 // here (a third of the time compute_cells takes).
+//
+// write_tets_vtu(mesh, path) writes the tetrahedra dual to a clipped mesh's cells (Yan et al.
+// 2011, 5.2: the Delaunay tetrahedra of the seeds whose circumcentre lies inside their material)
+// as tets.vtu: one point per cell at its seed (point data `seed`), one VTK_TETRA (10) per
+// tetrahedron, positively oriented, with cell data `material`, `min_dihedral` and
+// `max_dihedral` (degrees), `radius_ratio` and `q4` (their Table 2's Q1 to Q4). Same layout,
+// atomicity and errors as mesh.vtu.
 #pragma once
 
 #include "vorocrust/api.hpp"
@@ -22,5 +29,6 @@
 namespace vorocrust {
 
 VOROCRUST_API void write_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path, const CellQuality* quality = nullptr);
+VOROCRUST_API void write_tets_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path);
 
 }  // namespace vorocrust

@@ -1,30 +1,17 @@
 #include "vorocrust/write_vtu.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cstdint>
-#include <functional>
 #include <optional>
-#include <ostream>
 #include <string>
 #include <vector>
 
-#include "vorocrust/atomic_file.hpp"
-#include "vorocrust/error.hpp"
+#include "export/vtu_arrays.hpp"
 
 namespace vorocrust {
 namespace {
 
-static_assert(std::endian::native == std::endian::little, "mesh.vtu declares little-endian data");
-
-// Values go to the file a block of this many cells (or points) at a time: the file is never
-// whole in memory, only the mesh it is written from.
-constexpr std::size_t kBlock = 1 << 14;
-
-template <class T>
-void put(std::string& out, T value) {
-  out.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
+using vtu::put;
 
 // A cell's faces, outward for it (as stored for their owner, reversed for their neighbour), and
 // its points each once in the order the faces first visit them: the `faces` and `connectivity`
@@ -57,25 +44,6 @@ class OutwardFaces {
   std::vector<std::size_t> seen_;
 };
 
-// One array of the appended section: declared with its size in bytes, then produced a block of
-// its items (cells or points) at a time, in order.
-struct Array {
-  const char* type;
-  const char* name;
-  int components;
-  std::size_t count;  // values
-  std::size_t value_bytes;
-  std::size_t items;
-  std::function<void(std::size_t begin, std::size_t end, std::string& out)> produce;
-  std::size_t bytes() const { return count * value_bytes; }
-};
-
-template <class T>
-Array array(const char* type, const char* name, int components, std::size_t count, std::size_t items,
-            std::function<void(std::size_t, std::size_t, std::string&)> produce) {
-  return {type, name, components, count, sizeof(T), items, std::move(produce)};
-}
-
 }  // namespace
 
 void write_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path, const CellQuality* quality) {
@@ -106,38 +74,39 @@ void write_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path, const
   };
   using Cell = const VoronoiCell&;
   using Shape = const CellShape&;
-  const std::vector<Array> arrays = {
-      array<std::int32_t>("Int32", "material", 1, cells, cells, per_cell([](Cell c, Shape) { return c.region; })),
-      array<std::int64_t>("Int64", "seed", 1, cells, cells,
+  using S = vtu::Section;
+  const std::vector<vtu::Array> arrays = {
+      vtu::array<std::int32_t>(S::CellData, "Int32", "material", 1, cells, cells, per_cell([](Cell c, Shape) { return c.region; })),
+      vtu::array<std::int64_t>(S::CellData, "Int64", "seed", 1, cells, cells,
                           per_cell([](Cell c, Shape) { return static_cast<std::int64_t>(c.seed); })),
-      array<double>("Float64", "volume", 1, cells, cells, per_cell([](Cell c, Shape) { return c.volume; })),
-      array<double>("Float64", "aspect_ratio", 1, cells, cells, per_cell([](Cell, Shape s) { return s.aspect_ratio; })),
-      array<double>("Float64", "Points", 3, 3 * mesh.points.size(), mesh.points.size(),
+      vtu::array<double>(S::CellData, "Float64", "volume", 1, cells, cells, per_cell([](Cell c, Shape) { return c.volume; })),
+      vtu::array<double>(S::CellData, "Float64", "aspect_ratio", 1, cells, cells, per_cell([](Cell, Shape s) { return s.aspect_ratio; })),
+      vtu::array<double>(S::Points, "Float64", "Points", 3, 3 * mesh.points.size(), mesh.points.size(),
                     [&](std::size_t begin, std::size_t end, std::string& out) {
                       for (std::size_t p = begin; p < end; ++p) {
                         for (int k = 0; k < 3; ++k) put(out, mesh.points[p][k]);
                       }
                     }),
-      array<std::int64_t>("Int64", "connectivity", 1, connectivity, cells,
+      vtu::array<std::int64_t>(S::Cells, "Int64", "connectivity", 1, connectivity, cells,
                           [&](std::size_t begin, std::size_t end, std::string& out) {
                             for (std::size_t c = begin; c < end; ++c) {
                               outward.walk(c, [](std::size_t) {}, [](Index) {},
                                            [&](Index p) { put(out, static_cast<std::int64_t>(p)); });
                             }
                           }),
-      array<std::int64_t>("Int64", "offsets", 1, cells, cells, [&](std::size_t begin, std::size_t end, std::string& out) {
+      vtu::array<std::int64_t>(S::Cells, "Int64", "offsets", 1, cells, cells, [&](std::size_t begin, std::size_t end, std::string& out) {
         for (std::size_t c = begin; c < end; ++c) put(out, connectivity_end += distinct[c]);
       }),
-      array<std::uint8_t>("UInt8", "types", 1, cells, cells,
+      vtu::array<std::uint8_t>(S::Cells, "UInt8", "types", 1, cells, cells,
                           [](std::size_t begin, std::size_t end, std::string& out) { out.append(end - begin, static_cast<char>(kPolyhedron)); }),
-      array<std::int64_t>("Int64", "faces", 1, faces, cells, [&](std::size_t begin, std::size_t end, std::string& out) {
+      vtu::array<std::int64_t>(S::Cells, "Int64", "faces", 1, faces, cells, [&](std::size_t begin, std::size_t end, std::string& out) {
         for (std::size_t c = begin; c < end; ++c) {
           put(out, static_cast<std::int64_t>(mesh.cells[c].faces.size()));
           outward.walk(c, [&](std::size_t n) { put(out, static_cast<std::int64_t>(n)); },
                        [&](Index p) { put(out, static_cast<std::int64_t>(p)); }, [](Index) {});
         }
       }),
-      array<std::int64_t>("Int64", "faceoffsets", 1, cells, cells, [&](std::size_t begin, std::size_t end, std::string& out) {
+      vtu::array<std::int64_t>(S::Cells, "Int64", "faceoffsets", 1, cells, cells, [&](std::size_t begin, std::size_t end, std::string& out) {
         for (std::size_t c = begin; c < end; ++c) {
           faces_end += 1;
           for (const Index f : mesh.cells[c].faces) faces_end += 1 + static_cast<std::int64_t>(mesh.faces[f].points.size());
@@ -145,38 +114,7 @@ void write_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path, const
         }
       }),
   };
-  std::string xml = "<?xml version=\"1.0\"?>\n"
-                    "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-                    "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" + std::to_string(mesh.points.size()) +
-                    "\" NumberOfCells=\"" + std::to_string(cells) + "\">\n";
-  std::size_t offset = 0;
-  for (const Array& a : arrays) {
-    const std::string name = a.name;
-    if (name == "material") xml += "<CellData Scalars=\"material\">\n";
-    if (name == "Points") xml += "</CellData>\n<Points>\n";
-    if (name == "connectivity") xml += "</Points>\n<Cells>\n";
-    xml += std::string("<DataArray type=\"") + a.type + "\" Name=\"" + a.name + "\" NumberOfComponents=\"" +
-           std::to_string(a.components) + "\" format=\"appended\" offset=\"" + std::to_string(offset) + "\"/>\n";
-    offset += sizeof(std::uint64_t) + a.bytes();
-  }
-  xml += "</Cells>\n</Piece>\n</UnstructuredGrid>\n<AppendedData encoding=\"raw\">\n_";
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << xml;
-    std::string block;
-    for (const Array& a : arrays) {
-      const std::uint64_t header = a.bytes();
-      out.write(reinterpret_cast<const char*>(&header), sizeof header);
-      std::size_t written = 0;
-      for (std::size_t begin = 0; begin < a.items; begin += kBlock) {
-        block.clear();
-        a.produce(begin, std::min(a.items, begin + kBlock), block);
-        out.write(block.data(), static_cast<std::streamsize>(block.size()));
-        written += block.size();
-      }
-      if (written != header) throw Error(Error::Kind::Internal, std::string("mesh.vtu: array ") + a.name + " came out of another size than declared");
-    }
-    out << "\n</AppendedData>\n</VTKFile>\n";
-  });
+  vtu::write_unstructured_grid(path, mesh.points.size(), cells, arrays);
 }
 
 }  // namespace vorocrust

@@ -20,6 +20,7 @@
 #include "vorocrust/threads.hpp"
 #include "vorocrust/write_mesh.hpp"
 #include "vorocrust/write_volume_mesh.hpp"
+#include "vorocrust/write_vtu.hpp"
 
 namespace vorocrust {
 
@@ -154,6 +155,8 @@ void write_outputs(const MeshResult& result, const MeshOptions& options, const R
   for (const OutputFormatSpec& f : output_formats()) {
     if (f.volume && wanted(f.format)) write_volume_format(result.cells, staged, f.name, quality);
   }
+  // The dual tetrahedra belong to a clipped mesh, whose seeds on the surface make them fill it.
+  if (wanted(OutputFormat::Tets) && options.method == Method::Clipped) write_tets_vtu(result.cells, staged / "tets.vtu");
   if (wanted(OutputFormat::QualitySvg)) {
     write_histogram_svg(staged / "quality.svg", "quality: " + (out / "surface.ply").string(),
                         quality_panels(result.surface_quality, result.cell_quality));

@@ -383,8 +383,9 @@ const std::array<OptionSpec, 22> kSpecs = {{
      .kind = OptionKind::Choices,
      .label = "Outputs",
      .help = "What to write into the output folder: vtu (mesh.vtu), openfoam (case/), tough (MESH), pflotran "
-             "(pflotran/), exodus (mesh.exo), seeds (seeds.csv), obj and ply (the surface), balls (balls.csv, balls.vtk, "
-             "smoothed_surface.ply), svg (quality.svg); report.json is always written",
+             "(pflotran/), exodus (mesh.exo), tets (tets.vtu, the dual tetrahedra of a clipped mesh), seeds (seeds.csv), "
+             "obj and ply (the surface), balls (balls.csv, balls.vtk, smoothed_surface.ply), svg (quality.svg), html "
+             "(report.html); report.json is always written",
      .group = "Outputs",
      .default_value = std::vector<std::string>(choice_names<OutputFormat>().begin(), choice_names<OutputFormat>().end()),
      .choices = choice_names<OutputFormat>(),

@@ -12,6 +12,7 @@ constexpr std::array<std::string_view, 1> kCase = {"case"};
 constexpr std::array<std::string_view, 1> kMesh = {"MESH"};
 constexpr std::array<std::string_view, 1> kPflotran = {"pflotran"};
 constexpr std::array<std::string_view, 1> kExodus = {"mesh.exo"};
+constexpr std::array<std::string_view, 1> kTets = {"tets.vtu"};
 constexpr std::array<std::string_view, 1> kSeeds = {"seeds.csv"};
 constexpr std::array<std::string_view, 1> kObj = {"surface.obj"};
 constexpr std::array<std::string_view, 1> kPly = {"surface.ply"};
@@ -20,7 +21,7 @@ constexpr std::array<std::string_view, 1> kSvg = {"quality.svg"};
 constexpr std::array<std::string_view, 1> kHtml = {"report.html"};
 
 // In the order of OutputFormat, and of ChoiceNames<OutputFormat>.
-const std::array<OutputFormatSpec, 11> kOutputs = {{
+const std::array<OutputFormatSpec, 12> kOutputs = {{
     {OutputFormat::Vtu, "vtu", kVtu, Stage::Cells, true,
      "one VTK polyhedron per cell with its material, seed, volume and aspect ratio (ParaView)"},
     {OutputFormat::OpenFoam, "openfoam", kCase, Stage::Cells, true,
@@ -31,6 +32,9 @@ const std::array<OutputFormatSpec, 11> kOutputs = {{
     {OutputFormat::Exodus, "exodus", kExodus, Stage::Cells, true,
      "Exodus II: a polyhedral block per material, side sets per boundary patch and interface, the seeds as cell "
      "variables (ParaView, SEACAS codes)"},
+    {OutputFormat::Tets, "tets", kTets, Stage::Cells, false,
+     "the tetrahedra dual to a clipped mesh (Yan et al.): a point per seed, a tetrahedron per Voronoi vertex "
+     "inside a material, with its material and shape measures Q1 to Q4 (clipped meshes only)"},
     {OutputFormat::Seeds, "seeds", kSeeds, Stage::Surface, false,
      "the seeds with label, radius and kind: the whole mesh in compact form"},
     {OutputFormat::SurfaceObj, "obj", kObj, Stage::Surface, false,
