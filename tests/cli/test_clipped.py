@@ -230,6 +230,38 @@ class Clipped(unittest.TestCase):
         self.assertGreater(fill["cvt"], 0.9)  # 0.93; the Poisson-disk seeds' 0.71
         self.assertLess(fill["random"], fill["cvt"])
 
+    def test_sliver_perturbation(self):
+        """--sliver-angle: Yan et al.'s post-processing moves the seeds of the dual tetrahedra's
+        slivers, keeping the cells exact; the smallest angle rises, the mean shape does not fall."""
+        options = ("--interior", "cvt", "--cvt-iterations", "10")
+        plain, before = self.mesh("cgal_joint.off", *options, name="plain")
+        out, after = self.mesh("cgal_joint.off", *options, "--sliver-angle", "15", name="perturbed")
+        perturbation = after["clipping"]["sliver_perturbation"]
+        self.assertNotIn("sliver_perturbation", before["clipping"])
+        self.assertGreater(perturbation["slivers_before"], 0)
+        self.assertGreater(perturbation["moves_kept"], 0)
+        self.assertLessEqual(perturbation["moves_kept"], perturbation["moves_tried"])
+        self.assertLess(perturbation["slivers_after"], perturbation["slivers_before"] / 2)
+        t0, t1 = before["dual_tets"], after["dual_tets"]
+        self.assertGreater(t1["min_min_dihedral"], t0["min_min_dihedral"])
+        self.assertGreater(t1["mean_min_dihedral"], t0["mean_min_dihedral"] - 0.5)
+        self.assertGreater(t1["mean_q4"], t0["mean_q4"] - 0.005)
+        self.assertGreater(t1["volume"], 0.98 * t0["volume"])
+        # The cells are still the clipped Voronoi cells: they fill the model to rounding.
+        grid = read_vtu(os.path.join(out, "mesh.vtu"))
+        volume = sum(cell_array(grid, "volume"))
+        self.assertAlmostEqual(volume / after["regions"][1]["volume"], 1, delta=1e-9)
+        seeds, _ = read_seeds(os.path.join(out, "seeds.csv"))
+        self.check_tets_file(out, t1, seeds)
+        print("\n  %d slivers below 15 degrees, %d after (%d of %d moves kept, %d rounds); smallest angle %.2f -> "
+              "%.2f, mean Q4 %.4f -> %.4f" % (perturbation["slivers_before"], perturbation["slivers_after"],
+                                               perturbation["moves_kept"], perturbation["moves_tried"],
+                                               perturbation["rounds"], t0["min_min_dihedral"], t1["min_min_dihedral"],
+                                               t0["mean_q4"], t1["mean_q4"]))
+        r = run("mesh", os.path.join(MODELS, "cgal_joint.off"), "-o", os.path.join(self.dir, "v"), "--sliver-angle", "15")
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("--method 'clipped'", r.stderr)
+
     def check_tets_file(self, out, figures, seeds):
         """tets.vtu holds the report's tetrahedra: positively oriented on the meshed seeds, with
         their volume and smallest dihedral angle."""

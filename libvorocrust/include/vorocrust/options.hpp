@@ -76,6 +76,10 @@ struct VOROCRUST_API MeshOptions {
   // point (Ebeida and Mitchell's welding; 1e-4 is theirs), leaving faces slightly non-planar
   // (cells/weld_short_edges.hpp). 0 welds none.
   double weld = 0;
+  // With Method::Clipped: the seeds of dual tetrahedra with a dihedral angle below this many
+  // degrees move at random, each move kept where it improves them (Yan et al.'s sliver
+  // perturbation; clipping/clipped_cells.hpp). 0 moves none.
+  double sliver_angle = 0;
   // With Method::Clipped: the seeds (OUTDIR/seeds.csv's form) instead of sampled ones; each seed
   // of a material must lie in its region, outside seeds are ignored. `interior` Cvt moves them.
   std::filesystem::path seeds_file;

@@ -105,6 +105,15 @@ struct VOROCRUST_API InteriorStats {
 };
 
 // What cutting the cells to the input did (MeshOptions::method Clipped; clipping/clip_cells.hpp).
+// What the perturbation of the dual tetrahedra's slivers did (MeshOptions::sliver_angle).
+struct VOROCRUST_API SliverPerturbation {
+  int rounds = 0;
+  std::size_t slivers_before = 0;  // tetrahedra with an angle below the bound, before
+  std::size_t slivers_after = 0;   // and in the mesh
+  std::size_t moves_tried = 0;
+  std::size_t moves_kept = 0;
+};
+
 struct VOROCRUST_API ClippingStats {
   std::size_t clipped_cells = 0;   // cells the surface crosses
   std::size_t surface_pieces = 0;  // parts of input triangles in a cell, before those in one plane join
@@ -115,6 +124,7 @@ struct VOROCRUST_API ClippingStats {
   // nearer an outside seed than every material seed (the outside seeds then move farther, and
   // the final figures have none).
   std::size_t uncovered_triangles = 0;
+  SliverPerturbation slivers;
 };
 
 // What welding short edges did (MeshOptions::weld; cells/weld_short_edges.hpp).

@@ -6,10 +6,12 @@
 #include <iterator>
 #include <limits>
 
+#include "clipping/dual_tets.hpp"
 #include "clipping/edge_seeds.hpp"
 #include "clipping/poisson_disk_seeds.hpp"
 #include "core/c_format.hpp"
 #include "core/split_mix.hpp"
+#include "core/surface_measures.hpp"
 #include "geometry/box_tree.hpp"
 #include "geometry/closest_point.hpp"
 #include "geometry/point_cloud.hpp"
@@ -124,10 +126,7 @@ class MaterialBoundary {
       return (closest(p, f) - p).squaredNorm();
     });
     if (face == geometry::BoxTree::kNoItem) return p;
-    const Triangle& t = domain_.triangles[face];
-    Point inward = (domain_.vertices[t[1]] - domain_.vertices[t[0]])
-                       .cross(domain_.vertices[t[2]] - domain_.vertices[t[0]])
-                       .normalized();
+    Point inward = face_normal(domain_, face);
     if (domain_.face_regions[face].back == material) inward = -inward;
     return closest(p, face) + inset * inward;
   }
@@ -153,8 +152,8 @@ bool on_the_surface(const VoronoiMesh& mesh, const VoronoiCell& cell) {
 // Yan et al.'s CVT (their 5.2): Lloyd iterations on the clipped cells, every interior seed to its
 // cell's centroid; after the first half, the seeds of the cells on the surface move onto it (a
 // thousandth of the radius inside) and stay there, each at the point nearest its centroid. Seeds
-// of other kinds (on reflex edges) stay where they are.
-void lloyd_iterations(const SurfaceMesh& domain, std::vector<Seed>& seeds, const ClippedOptions& options) {
+// of other kinds (on reflex edges) stay where they are. Returns which seeds it holds on the surface.
+std::vector<char> lloyd_iterations(const SurfaceMesh& domain, std::vector<Seed>& seeds, const ClippedOptions& options) {
   const RegionLocator locate(domain);
   const MaterialBoundary boundary(domain);
   const int free_rounds = (options.cvt_iterations + 1) / 2;
@@ -175,6 +174,134 @@ void lloyd_iterations(const SurfaceMesh& domain, std::vector<Seed>& seeds, const
       }
     }
   }
+  return held;
+}
+
+// The dual tetrahedra of one clipping (dual_tets.hpp), indexed by seed: each tetrahedron's
+// smallest dihedral angle, the tetrahedra about each seed and its neighbours through them.
+struct SeedStars {
+  std::vector<std::array<std::uint32_t, 4>> tets;  // seeds
+  std::vector<double> min_dihedral;
+  std::vector<std::vector<std::uint32_t>> star;  // per seed: its tetrahedra
+
+  SeedStars(const VoronoiMesh& cells, std::size_t seeds) : star(seeds) {
+    const DualTets dual = dual_tets(cells);
+    for (const std::array<std::uint32_t, 4>& t : dual.tets) {
+      std::array<std::uint32_t, 4> s;
+      for (int k = 0; k < 4; ++k) s[k] = static_cast<std::uint32_t>(cells.cells[t[k]].seed);
+      const auto at = [&](int k) -> const Point& { return cells.cells[t[k]].site; };
+      min_dihedral.push_back(tet_shape(at(0), at(1), at(2), at(3)).min_dihedral);
+      for (std::uint32_t v : s) star[v].push_back(static_cast<std::uint32_t>(tets.size()));
+      tets.push_back(s);
+    }
+  }
+
+  // The seeds that share a tetrahedron with `v`, and `v`.
+  std::vector<std::uint32_t> closed_neighbourhood(std::uint32_t v) const {
+    std::vector<std::uint32_t> around{v};
+    for (std::uint32_t t : star[v]) around.insert(around.end(), tets[t].begin(), tets[t].end());
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    return around;
+  }
+
+  // The smallest angle of the tetrahedra that moving `v` can change: those about it, and those
+  // of its neighbours `around` alone (what fills its star's hole when it leaves).
+  double worst_about(std::uint32_t v, const std::vector<std::uint32_t>& around) const {
+    double worst = 180;
+    const auto in = [&](std::uint32_t u) { return std::binary_search(around.begin(), around.end(), u); };
+    for (std::uint32_t u : around) {
+      for (std::uint32_t t : star[u]) {
+        const std::array<std::uint32_t, 4>& s = tets[t];
+        if (std::find(s.begin(), s.end(), v) != s.end() || std::all_of(s.begin(), s.end(), in)) {
+          worst = std::min(worst, min_dihedral[t]);
+        }
+      }
+    }
+    return worst;
+  }
+};
+
+// Yan et al.'s post-processing of the dual tetrahedra (their 5.2, after Tournois, Srinivasan and
+// Alliez's sliver perturbation, with random moves as Edelsbrunner and Guoy's): a seed of each
+// sliver moves a little in a random direction (a seed held on the surface slides along it), and
+// the move stays only where the tetrahedra it can change come out with a larger smallest angle.
+// Seeds moved in one round share no tetrahedron, so that each move is judged nearly alone; each
+// round clips twice (before and after its moves).
+SliverPerturbation perturb_slivers(const SurfaceMesh& domain, std::vector<Seed>& seeds, const std::vector<char>& held,
+                                   const ClippedOptions& options) {
+  constexpr int kMaxRounds = 40, kIdleRounds = 4;
+  SliverPerturbation stats;
+  const RegionLocator locate(domain);
+  const MaterialBoundary boundary(domain);
+  const std::size_t n = seeds.size();
+  const auto movable = [&](std::uint32_t v) {
+    return seeds[v].kind == SeedKind::Interior || (v < held.size() && held[v]);
+  };
+  struct Move {
+    std::uint32_t seed;
+    Point from;
+    std::vector<std::uint32_t> around;
+  };
+  for (int idle = 0; stats.rounds < kMaxRounds && idle < kIdleRounds; ++stats.rounds) {
+    const SeedStars before(clip(domain, seeds, options, nullptr).cells, n);
+    std::vector<std::uint32_t> slivers;
+    for (std::uint32_t t = 0; t < before.tets.size(); ++t) {
+      if (before.min_dihedral[t] < options.sliver_angle) slivers.push_back(t);
+    }
+    if (stats.rounds == 0) stats.slivers_before = slivers.size();
+    if (slivers.empty()) break;
+    std::stable_sort(slivers.begin(), slivers.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return before.min_dihedral[a] < before.min_dihedral[b]; });
+    SplitMix64 random = SplitMix64::stream(options.seed, 0x5113e7 + static_cast<std::uint64_t>(stats.rounds));
+    std::vector<char> locked(n, 0);
+    std::vector<Move> moves;
+    for (std::uint32_t t : slivers) {
+      const std::array<std::uint32_t, 4>& tet = before.tets[t];
+      std::array<std::uint32_t, 4> free{};
+      int count = 0;
+      for (std::uint32_t v : tet) {
+        if (movable(v) && !locked[v]) free[count++] = v;
+      }
+      if (count == 0) continue;
+      const std::uint32_t v = free[random() % static_cast<std::uint64_t>(count)];
+      double edges = 0;
+      for (int i = 0; i < 4; ++i) {
+        for (int j = i + 1; j < 4; ++j) edges += (seeds[tet[i]].position - seeds[tet[j]].position).norm() / 6;
+      }
+      Point direction = Point::Zero();
+      while (direction.squaredNorm() < 1e-4 || direction.squaredNorm() > 0.25) {
+        direction = Point(random.unit(), random.unit(), random.unit()) - Point::Constant(0.5);
+      }
+      Seed& s = seeds[v];
+      const Point step = (0.05 + 0.2 * random.unit()) * edges * direction.normalized();
+      const Point to = v < held.size() && held[v] ? boundary.onto(s.position + step, s.region, kJitter * options.radius)
+                                                  : Point(s.position + step);
+      if (locate.region_of(to) != s.region) continue;
+      Move m{v, s.position, before.closed_neighbourhood(v)};
+      for (std::uint32_t u : m.around) locked[u] = 1;
+      s.position = to;
+      moves.push_back(std::move(m));
+    }
+    stats.moves_tried += moves.size();
+    if (moves.empty()) break;
+    const SeedStars after(clip(domain, seeds, options, nullptr).cells, n);
+    std::size_t kept = 0;
+    for (Move& m : moves) {
+      std::vector<std::uint32_t> around = after.closed_neighbourhood(m.seed);
+      around.insert(around.end(), m.around.begin(), m.around.end());
+      std::sort(around.begin(), around.end());
+      around.erase(std::unique(around.begin(), around.end()), around.end());
+      if (after.worst_about(m.seed, around) > before.worst_about(m.seed, around)) {
+        ++kept;
+      } else {
+        seeds[m.seed].position = m.from;
+      }
+    }
+    stats.moves_kept += kept;
+    idle = kept == 0 ? idle + 1 : 0;
+  }
+  return stats;
 }
 
 }  // namespace
@@ -211,9 +338,20 @@ ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& optio
                   {.option = "max_size"});
     }
   }
-  if (options.mode == InteriorMode::Cvt) phases("cvt", [&] { lloyd_iterations(domain, seeds, options); });
+  std::vector<char> held;
+  if (options.mode == InteriorMode::Cvt) held = phases("cvt", [&] { return lloyd_iterations(domain, seeds, options); });
+  SliverPerturbation perturbation;
+  if (options.sliver_angle > 0) {
+    perturbation = phases("sliver perturbation", [&] { return perturb_slivers(domain, seeds, held, options); });
+  }
   if (options.before_cells) options.before_cells(seeds);
   Clipping c = clip(domain, seeds, options, &phases);
+  if (options.sliver_angle > 0) {
+    const SeedStars final(c.cells, c.seeds.size());
+    perturbation.slivers_after = static_cast<std::size_t>(std::count_if(
+        final.min_dihedral.begin(), final.min_dihedral.end(), [&](double a) { return a < options.sliver_angle; }));
+  }
+  c.stats.slivers = perturbation;
   return {std::move(c.seeds), std::move(c.cells), c.stats};
 }
 

@@ -17,6 +17,12 @@
 //   Surface and move to the point of their material's boundary nearest their centroid, a
 //   thousandth of the radius inside, for the rest: Yan et al.'s constrained phase, which puts
 //   seeds on the surface so that the dual tetrahedra reach it.
+// - with options.sliver_angle > 0, Yan et al.'s post-processing: rounds of small random moves of
+//   the seeds of the dual tetrahedra (dual_tets.hpp) whose smallest dihedral angle is below it,
+//   each kept only where the tetrahedra it changes come out better (interior seeds and those the
+//   constrained phase holds, which slide along the surface; phase "sliver perturbation"), until
+//   none is below it, a round keeps nothing four times running, or 40 rounds; what it did is in
+//   the stats' `slivers`.
 // - then each material's Voronoi cells of its seeds and outside seeds 1.5 radii beyond the
 //   domain's box (phase "cells"), cut to the materials (clip_cells.hpp; phase "clipping"). Where
 //   an outside seed is nearer part of the surface than every material seed, the outside seeds
@@ -40,6 +46,8 @@ struct ClippedOptions {
   double radius = 0;  // the seeds' Poisson-disk radius, or the lattice's spacing
   InteriorMode mode = InteriorMode::Random;
   int cvt_iterations = 20;
+  // Dual tetrahedra with a dihedral angle below this many degrees have their seeds perturbed; 0: none.
+  double sliver_angle = 0;
   // Reflex edges whose faces' normals turn by more than this take seeds (edge_seeds.hpp).
   double sharp_angle_degrees = 30;
   std::uint64_t seed = 0;

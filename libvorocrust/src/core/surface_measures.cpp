@@ -2,6 +2,14 @@
 
 namespace vorocrust {
 
+Point unit_normal(const std::vector<Point>& vertices, const Triangle& t) {
+  const Point n = (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]);
+  const double length = n.norm();
+  return length > 0 ? Point(n / length) : Point(Point::Zero());
+}
+
+Point face_normal(const SurfaceMesh& mesh, Index face) { return unit_normal(mesh.vertices, mesh.triangles[face]); }
+
 double face_area(const SurfaceMesh& mesh, Index face) {
   const Triangle& t = mesh.triangles[face];
   return 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();

@@ -1,4 +1,4 @@
-// Internal: area and enclosed volume of a set of faces.
+// Internal: normal, area and enclosed volume of faces and sets of faces.
 #pragma once
 
 #include <vector>
@@ -7,6 +7,9 @@
 
 namespace vorocrust {
 
+// The unit normal of triangle `t` over `vertices` (right-handed), zero for a degenerate one.
+Point unit_normal(const std::vector<Point>& vertices, const Triangle& t);
+Point face_normal(const SurfaceMesh& mesh, Index face);
 double face_area(const SurfaceMesh& mesh, Index face);
 Point face_centroid(const SurfaceMesh& mesh, Index face);
 double surface_area(const SurfaceMesh& mesh, const std::vector<Index>& faces);

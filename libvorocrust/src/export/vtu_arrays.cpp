@@ -29,18 +29,21 @@ const char* tag(Section s) {
 
 void write_unstructured_grid(const std::filesystem::path& path, std::size_t points, std::size_t cells,
                              const std::vector<Array>& arrays) {
-  std::string xml = "<?xml version=\"1.0\"?>\n"
-                    "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-                    "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" + std::to_string(points) +
-                    "\" NumberOfCells=\"" + std::to_string(cells) + "\">\n";
+  std::string xml =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" +
+      std::to_string(points) + "\" NumberOfCells=\"" + std::to_string(cells) + "\">\n";
   std::size_t offset = 0;
   const Array* open = nullptr;
   for (const Array& a : arrays) {
     if (open == nullptr || open->section != a.section) {
       if (open != nullptr) xml += std::string("</") + tag(open->section) + ">\n";
-      xml += std::string("<") + tag(a.section) + (a.section == Section::CellData || a.section == Section::PointData
-                                                      ? std::string(" Scalars=\"") + a.name + "\""
-                                                      : std::string()) + ">\n";
+      xml += std::string("<") + tag(a.section) +
+             (a.section == Section::CellData || a.section == Section::PointData
+                  ? std::string(" Scalars=\"") + a.name + "\""
+                  : std::string()) +
+             ">\n";
       open = &a;
     }
     xml += std::string("<DataArray type=\"") + a.type + "\" Name=\"" + a.name + "\" NumberOfComponents=\"" +
@@ -63,8 +66,8 @@ void write_unstructured_grid(const std::filesystem::path& path, std::size_t poin
         written += block.size();
       }
       if (written != header) {
-        throw Error(Error::Kind::Internal, path.filename().string() + ": array " + a.name +
-                                               " came out of another size than declared");
+        throw Error(Error::Kind::Internal,
+                    path.filename().string() + ": array " + a.name + " came out of another size than declared");
       }
     }
     out << "\n</AppendedData>\n</VTKFile>\n";

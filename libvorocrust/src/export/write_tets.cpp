@@ -28,15 +28,19 @@ void write_tets_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path) 
   const std::vector<vtu::Array> arrays = {
       vtu::array<std::int64_t>(S::PointData, "Int64", "seed", 1, sites, sites,
                                [&](std::size_t begin, std::size_t end, std::string& out) {
-                                 for (std::size_t c = begin; c < end; ++c) put(out, static_cast<std::int64_t>(mesh.cells[c].seed));
+                                 for (std::size_t c = begin; c < end; ++c)
+                                   put(out, static_cast<std::int64_t>(mesh.cells[c].seed));
                                }),
       vtu::array<std::int32_t>(S::CellData, "Int32", "material", 1, tets, tets,
                                [&](std::size_t begin, std::size_t end, std::string& out) {
                                  for (std::size_t t = begin; t < end; ++t) put(out, dual.material[t]);
                                }),
-      vtu::array<double>(S::CellData, "Float64", "min_dihedral", 1, tets, tets, shape(&clipping::TetShape::min_dihedral)),
-      vtu::array<double>(S::CellData, "Float64", "max_dihedral", 1, tets, tets, shape(&clipping::TetShape::max_dihedral)),
-      vtu::array<double>(S::CellData, "Float64", "radius_ratio", 1, tets, tets, shape(&clipping::TetShape::radius_ratio)),
+      vtu::array<double>(S::CellData, "Float64", "min_dihedral", 1, tets, tets,
+                         shape(&clipping::TetShape::min_dihedral)),
+      vtu::array<double>(S::CellData, "Float64", "max_dihedral", 1, tets, tets,
+                         shape(&clipping::TetShape::max_dihedral)),
+      vtu::array<double>(S::CellData, "Float64", "radius_ratio", 1, tets, tets,
+                         shape(&clipping::TetShape::radius_ratio)),
       vtu::array<double>(S::CellData, "Float64", "q4", 1, tets, tets, shape(&clipping::TetShape::q4)),
       vtu::array<double>(S::Points, "Float64", "Points", 3, 3 * sites, sites,
                          [&](std::size_t begin, std::size_t end, std::string& out) {
@@ -52,7 +56,8 @@ void write_tets_vtu(const VoronoiMesh& mesh, const std::filesystem::path& path) 
                                }),
       vtu::array<std::int64_t>(S::Cells, "Int64", "offsets", 1, tets, tets,
                                [](std::size_t begin, std::size_t end, std::string& out) {
-                                 for (std::size_t t = begin; t < end; ++t) put(out, static_cast<std::int64_t>(4 * (t + 1)));
+                                 for (std::size_t t = begin; t < end; ++t)
+                                   put(out, static_cast<std::int64_t>(4 * (t + 1)));
                                }),
       vtu::array<std::uint8_t>(S::Cells, "UInt8", "types", 1, tets, tets,
                                [](std::size_t begin, std::size_t end, std::string& out) {

@@ -267,6 +267,7 @@ MeshResult run_clipped(const SurfaceMesh& model, const MeshOptions& options, con
   clipped.radius = std::isfinite(options.max_size) ? options.max_size : bounding_diagonal(input) / 20;
   clipped.mode = options.interior;
   clipped.cvt_iterations = options.cvt_iterations;
+  clipped.sliver_angle = options.sliver_angle;
   clipped.sharp_angle_degrees = options.sharp_angle();
   clipped.seed = options.seed;
   clipped.threads = options.threads;

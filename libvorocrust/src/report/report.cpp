@@ -478,6 +478,12 @@ std::string run_report_json(const RunReport& report, int indent) {
       doc["clipping"] = {{"clipped_cells", c.clipped_cells},   {"surface_pieces", c.surface_pieces},
                          {"clipped_faces", c.clipped_faces},   {"dropped_faces", c.dropped_faces},
                          {"holes", c.holes}};
+      if (report.options.sliver_angle > 0) {
+        const SliverPerturbation& s = c.slivers;
+        doc["clipping"]["sliver_perturbation"] = {
+            {"rounds", s.rounds},           {"slivers_before", s.slivers_before}, {"slivers_after", s.slivers_after},
+            {"moves_tried", s.moves_tried}, {"moves_kept", s.moves_kept}};
+      }
     }
     if (m.dual_tets) {
       const DualTetFigures& t = *m.dual_tets;
