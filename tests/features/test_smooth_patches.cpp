@@ -42,11 +42,6 @@ Smoothing smooth_model(const std::string& model, const SmoothingOptions& options
   return run;
 }
 
-Point face_normal(const SurfaceMesh& mesh, Index f) {
-  const Triangle& t = mesh.triangles[f];
-  return (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).normalized();
-}
-
 // How far patches are from flat: angles (degrees) between the normals across non-sharp edges.
 struct Bend {
   double max = 0, mean = 0, p99 = 0;

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/edge_topology.hpp"
+#include "core/surface_measures.hpp"
 #include "core/split_mix.hpp"
 #include "seeds/locate_regions.hpp"
 
@@ -83,11 +84,6 @@ std::vector<std::pair<double, double>> open_parts(const Point& a, const Point& b
   return open;
 }
 
-Point unit_normal(const SurfaceMesh& m, Index f) {
-  const Triangle& t = m.triangles[f];
-  return (m.vertices[t[1]] - m.vertices[t[0]]).cross(m.vertices[t[2]] - m.vertices[t[0]]).normalized();
-}
-
 }  // namespace
 
 std::vector<Seed> reflex_edge_seeds(const SurfaceMesh& domain, std::int32_t material, double radius,
@@ -100,7 +96,7 @@ std::vector<Seed> reflex_edge_seeds(const SurfaceMesh& domain, std::int32_t mate
   };
   // Out of the material: a face's normal points to its front.
   const auto outward = [&](Index f) {
-    const Point n = unit_normal(domain, f);
+    const Point n = face_normal(domain, f);
     return domain.face_regions[f].back == material ? n : Point(-n);
   };
   std::vector<std::size_t> reflex;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/surface_measures.hpp"
 #include "features/strata.hpp"
 
 namespace vorocrust {
@@ -99,12 +100,7 @@ namespace {
 void compute_topology_and_normals(const SurfaceMesh& mesh, Strata& s) {
   s.topology = build_edge_topology(mesh);
   s.face_normals.resize(mesh.num_faces());
-  for (std::size_t f = 0; f < mesh.num_faces(); ++f) {
-    const Triangle& t = mesh.triangles[f];
-    const Point n = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-    const double len = n.norm();
-    s.face_normals[f] = len > 0 ? Point(n / len) : Point::Zero();
-  }
+  for (std::size_t f = 0; f < mesh.num_faces(); ++f) s.face_normals[f] = face_normal(mesh, static_cast<Index>(f));
 }
 
 // Creases, tangents, patches and incidences from sharp edges and corners already decided.

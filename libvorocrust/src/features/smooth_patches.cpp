@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/edge_topology.hpp"
+#include "core/surface_measures.hpp"
 #include "vorocrust/error.hpp"
 
 namespace vorocrust {
@@ -42,12 +43,6 @@ struct Refinement {
   std::vector<bool> fixed;                  // per vertex: never moves
   double cos_kink = -1;                     // no non-sharp edge may end a round bent more than this (cosine)
 };
-
-Point unit_normal(const std::vector<Point>& p, const Triangle& t) {
-  const Point n = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);
-  const double len = n.norm();
-  return len > 0 ? Point(n / len) : Point::Zero();
-}
 
 // Cosine of the bend across manifold edge e: the angle between its two faces' normals. Neighbours
 // of opposite orientation (a non-orientable patch) are compared as lines.

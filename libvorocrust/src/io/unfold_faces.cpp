@@ -5,19 +5,13 @@
 #include <numbers>
 
 #include "core/edge_topology.hpp"
+#include "core/surface_measures.hpp"
 #include "geometry/box_tree.hpp"
 #include "geometry/triangle_intersection.hpp"
 
 namespace vorocrust::io {
 
 namespace {
-
-Point face_normal(const SurfaceMesh& mesh, Index f) {
-  const Triangle& t = mesh.triangles[f];
-  const Point n = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-  const double length = n.norm();
-  return length > 0 ? Point(n / length) : Point(Point::Zero());
-}
 
 // How many of face f's manifold edges bend by more than the angle whose cosine is `cos_bend`,
 // and how many manifold edges it has.

@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <map>
 
+#include "core/surface_measures.hpp"
 #include "vorocrust/atomic_file.hpp"
 #include "vorocrust/read_mesh.hpp"
 
@@ -13,12 +14,6 @@ namespace {
 
 // Shortest text that reads back to the same double.
 std::ostream& precise(std::ostream& out) { return out << std::setprecision(17); }
-
-Point normal_of(const SurfaceMesh& mesh, const Triangle& t) {
-  const Point n = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-  const double len = n.norm();
-  return len > 0 ? Point(n / len) : Point::Zero();
-}
 
 void write_off(const SurfaceMesh& mesh, std::ostream& out) {
   precise(out) << "OFF\n" << mesh.vertices.size() << ' ' << mesh.triangles.size() << " 0\n";
@@ -56,7 +51,7 @@ void write_stl(const SurfaceMesh& mesh, std::ostream& out, bool ascii) {
   if (ascii) {
     precise(out) << "solid vorocrust\n";
     for (const Triangle& t : mesh.triangles) {
-      const Point n = normal_of(mesh, t);
+      const Point n = unit_normal(mesh.vertices, t);
       out << " facet normal " << n.x() << ' ' << n.y() << ' ' << n.z() << "\n  outer loop\n";
       for (Index v : t) out << "   vertex " << mesh.vertices[v].x() << ' ' << mesh.vertices[v].y() << ' ' << mesh.vertices[v].z() << '\n';
       out << "  endloop\n endfacet\n";
@@ -71,7 +66,7 @@ void write_stl(const SurfaceMesh& mesh, std::ostream& out, bool ascii) {
   out.write(reinterpret_cast<const char*>(&n), 4);
   for (const Triangle& t : mesh.triangles) {
     float record[12];
-    const Point normal = normal_of(mesh, t);
+    const Point normal = unit_normal(mesh.vertices, t);
     for (int i = 0; i < 3; ++i) record[i] = static_cast<float>(normal[i]);
     for (int c = 0; c < 3; ++c)
       for (int i = 0; i < 3; ++i) record[3 + 3 * c + i] = static_cast<float>(mesh.vertices[t[c]][i]);
