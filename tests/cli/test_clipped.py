@@ -423,6 +423,16 @@ class Clipped(unittest.TestCase):
         self.assertEqual(r.returncode, 4, r.stderr)
         self.assertIn("seed 1 ", r.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.dir, "w", "mesh.vtu")))
+        # A seed on the surface (a vertex of the model) is refused as such, naming the face.
+        with open(os.path.join(MODELS, "sandia_cube_test_02.obj")) as f:
+            vertex = next(line.split()[1:4] for line in f if line.startswith("v "))
+        on_surface = os.path.join(self.dir, "on_surface.csv")
+        with open(on_surface, "w") as f:
+            f.writelines([lines[0], ",".join(vertex + lines[1].split(",")[3:])] + lines[2:])
+        r = run("mesh", os.path.join(MODELS, "sandia_cube_test_02.obj"), "-o", os.path.join(self.dir, "s"),
+                "--method", "clipped", "--seeds", on_surface)
+        self.assertEqual(r.returncode, 4, r.stderr)
+        self.assertRegex(r.stderr, r"seed 1 \(.*\) lies on the surface \(face \d+ \(sandia_cube_test_02.obj line \d+\)\)")
         r = run("mesh", os.path.join(MODELS, "sandia_cube_test_02.obj"), "-o", os.path.join(self.dir, "v"),
                 "--seeds", seeds_csv)
         self.assertEqual(r.returncode, 2, r.stderr)

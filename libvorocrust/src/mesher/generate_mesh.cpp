@@ -16,6 +16,8 @@
 #include "core/memory.hpp"
 #include "core/phases.hpp"
 #include "features/surface_features.hpp"
+#include "geometry/box_tree.hpp"
+#include "geometry/closest_point.hpp"
 #include "interior/interior_seeds.hpp"
 #include "io/enclose_in_box.hpp"
 #include "refinement/refine_balls.hpp"
@@ -226,6 +228,19 @@ void refuse_sheets(const SurfaceMesh& input) {
   }
 }
 
+// The input face nearest `p` and its distance.
+std::pair<std::uint32_t, double> nearest_face(const SurfaceMesh& mesh, const Point& p) {
+  const geometry::BoxTree faces = geometry::face_tree(mesh);
+  const auto [face, squared] = faces.nearest(p, [&](std::uint32_t f) {
+    const Triangle& t = mesh.triangles[f];
+    return (geometry::closest_on_triangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) - p)
+        .squaredNorm();
+  });
+  return {face, std::sqrt(squared)};
+}
+
+double bounding_diagonal(const SurfaceMesh& mesh);
+
 // The material seeds of a given seeds file, each checked to lie in the region it names: a seed
 // outside its region would leave part of the region to no cell.
 std::vector<Seed> given_seeds(const std::filesystem::path& path, const SurfaceMesh& input) {
@@ -237,6 +252,15 @@ std::vector<Seed> given_seeds(const std::filesystem::path& path, const SurfaceMe
     if (s.region <= 0) continue;
     const std::int32_t region = locate.region_of(s.position);
     if (region != s.region) {
+      const auto [face, distance] = nearest_face(input, s.position);
+      if (distance <= 1e-12 * bounding_diagonal(input)) {
+        throw Error(Error::Kind::InvalidGeometry,
+                    c_format("%s: seed %zu (%s) lies on the surface (%s), where no cell can tell its side: move it "
+                             "into region %d",
+                             path.string().c_str(), i + 1, describe_point(s.position).c_str(),
+                             describe_face(input, face).c_str(), s.region),
+                    {.option = "seeds"});
+      }
       throw Error(Error::Kind::InvalidGeometry,
                   c_format("%s: seed %zu (%s) is labelled region %d but lies in region %d", path.string().c_str(),
                            i + 1, describe_point(s.position).c_str(), s.region, region),
