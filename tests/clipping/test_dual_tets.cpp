@@ -14,37 +14,11 @@
 
 #include "clipping/clip_cells.hpp"
 #include "clipping/dual_tets.hpp"
-#include "surface_builder.hpp"
+#include "clipping/clipped_box.hpp"
 #include "vorocrust/cells.hpp"
 #include "vorocrust/regions.hpp"
 
 namespace vorocrust::dual_tets_test {
-
-// The box [lo, hi] as a labelled domain.
-SurfaceMesh box_surface(const Point& lo, const Point& hi) {
-  test::SurfaceBuilder b;
-  b.box(lo, hi);
-  SurfaceMesh surface = b.mesh;
-  label_regions(surface);
-  return surface;
-}
-
-// `inside` as material seeds, then outside seeds on a box a spacing of 1 beyond [lo, hi].
-std::vector<Seed> with_outside_seeds(const std::vector<Point>& inside, const Point& lo, const Point& hi) {
-  std::vector<Seed> seeds;
-  for (const Point& p : inside) seeds.push_back({p, 1, 0, SeedKind::Interior});
-  const Point a = lo - Point::Constant(1.5), b = hi + Point::Constant(1.5);
-  const int k = 8;
-  for (int i = 0; i <= k; ++i) {
-    for (int j = 0; j <= k; ++j) {
-      for (int l = 0; l <= k; ++l) {
-        if (i != 0 && i != k && j != 0 && j != k && l != 0 && l != k) continue;
-        seeds.push_back({a + (b - a).cwiseProduct(Point(i, j, l) / k), 0, 0, SeedKind::Outside});
-      }
-    }
-  }
-  return seeds;
-}
 
 Point circumcentre(const std::array<Point, 4>& v) {
   Eigen::Matrix3d m;
@@ -86,9 +60,7 @@ TEST(DualTets, AreTheDelaunayTetrahedraWithTheirCircumcentreInside) {
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Point> sites;
   for (int i = 0; i < 40; ++i) sites.push_back(lo + (hi - lo).cwiseProduct(Point(u(random), u(random), u(random))));
-  const std::vector<Seed> seeds = with_outside_seeds(sites, lo, hi);
-  const VoronoiMesh clipped =
-      clipping::clip_cells(clipping::material_diagrams(seeds, sites.size()), box_surface(lo, hi));
+  const VoronoiMesh clipped = test::clipped_in_box(test::interior_seeds(sites), lo, hi);
   const clipping::DualTets dual = clipping::dual_tets(clipped);
   EXPECT_EQ(dual.degenerate_points, 0u);
   std::set<std::array<std::uint32_t, 4>> found;
@@ -140,8 +112,7 @@ TEST(DualTets, BodyCentredLatticeGivesSommervilleTetrahedra) {
       }
     }
   }
-  const VoronoiMesh clipped = clipping::clip_cells(
-      clipping::material_diagrams(with_outside_seeds(sites, lo, hi), sites.size()), box_surface(lo, hi));
+  const VoronoiMesh clipped = test::clipped_in_box(test::interior_seeds(sites), lo, hi);
   const clipping::DualTets dual = clipping::dual_tets(clipped);
   ASSERT_GT(dual.tets.size(), 50u);
   const auto site = [&](std::uint32_t c) -> const Point& { return clipped.cells[c].site; };

@@ -8,6 +8,7 @@
 
 #include "clipping/dual_tets.hpp"
 #include "clipping/edge_seeds.hpp"
+#include "clipping/local_stars.hpp"
 #include "clipping/poisson_disk_seeds.hpp"
 #include "core/c_format.hpp"
 #include "core/split_mix.hpp"
@@ -177,125 +178,124 @@ std::vector<char> lloyd_iterations(const SurfaceMesh& domain, std::vector<Seed>&
   return held;
 }
 
-// The dual tetrahedra of one clipping (dual_tets.hpp), indexed by seed: each tetrahedron's
-// smallest dihedral angle, the tetrahedra about each seed and its neighbours through them.
+// The dual tetrahedra of one clipping (dual_tets.hpp) by their seeds, with their smallest
+// dihedral angles.
 struct SeedStars {
-  std::vector<std::array<std::uint32_t, 4>> tets;  // seeds
+  std::vector<std::array<std::uint32_t, 4>> tets;
   std::vector<double> min_dihedral;
-  std::vector<std::vector<std::uint32_t>> star;  // per seed: its tetrahedra
 
-  SeedStars(const VoronoiMesh& cells, std::size_t seeds) : star(seeds) {
-    const DualTets dual = dual_tets(cells);
-    for (const std::array<std::uint32_t, 4>& t : dual.tets) {
+  explicit SeedStars(const VoronoiMesh& cells) {
+    for (const std::array<std::uint32_t, 4>& t : dual_tets(cells).tets) {
       std::array<std::uint32_t, 4> s;
       for (int k = 0; k < 4; ++k) s[k] = static_cast<std::uint32_t>(cells.cells[t[k]].seed);
       const auto at = [&](int k) -> const Point& { return cells.cells[t[k]].site; };
       min_dihedral.push_back(tet_shape(at(0), at(1), at(2), at(3)).min_dihedral);
-      for (std::uint32_t v : s) star[v].push_back(static_cast<std::uint32_t>(tets.size()));
       tets.push_back(s);
     }
   }
-
-  // The seeds that share a tetrahedron with `v`, and `v`.
-  std::vector<std::uint32_t> closed_neighbourhood(std::uint32_t v) const {
-    std::vector<std::uint32_t> around{v};
-    for (std::uint32_t t : star[v]) around.insert(around.end(), tets[t].begin(), tets[t].end());
-    std::sort(around.begin(), around.end());
-    around.erase(std::unique(around.begin(), around.end()), around.end());
-    return around;
-  }
-
-  // The smallest angle of the tetrahedra that moving `v` can change: those about it, and those
-  // of its neighbours `around` alone (what fills its star's hole when it leaves).
-  double worst_about(std::uint32_t v, const std::vector<std::uint32_t>& around) const {
-    double worst = 180;
-    const auto in = [&](std::uint32_t u) { return std::binary_search(around.begin(), around.end(), u); };
-    for (std::uint32_t u : around) {
-      for (std::uint32_t t : star[u]) {
-        const std::array<std::uint32_t, 4>& s = tets[t];
-        if (std::find(s.begin(), s.end(), v) != s.end() || std::all_of(s.begin(), s.end(), in)) {
-          worst = std::min(worst, min_dihedral[t]);
-        }
-      }
-    }
-    return worst;
-  }
 };
+
+// The tetrahedra about the seeds `around` (LocalStars::star), each once; false where one star is
+// not sure.
+bool stars_of(const LocalStars& local, const std::vector<std::uint32_t>& around, std::vector<StarTet>& tets) {
+  tets.clear();
+  std::vector<std::uint32_t> ignored;
+  for (std::uint32_t u : around) {
+    if (!local.star(u, tets, ignored)) return false;
+  }
+  std::sort(tets.begin(), tets.end());
+  tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
+  return true;
+}
+
+// The smallest angle of the tetrahedra in `before` but not in `after` (what a move removes; 180
+// for none). Both sorted.
+double worst_removed(const std::vector<StarTet>& before, const std::vector<StarTet>& after) {
+  std::vector<StarTet> removed;
+  std::set_difference(before.begin(), before.end(), after.begin(), after.end(), std::back_inserter(removed));
+  double worst = 180;
+  for (const StarTet& t : removed) worst = std::min(worst, t.min_dihedral);
+  return worst;
+}
 
 // Yan et al.'s post-processing of the dual tetrahedra (their 5.2, after Tournois, Srinivasan and
 // Alliez's sliver perturbation, with random moves as Edelsbrunner and Guoy's): a seed of each
-// sliver moves a little in a random direction (a seed held on the surface slides along it), and
-// the move stays only where the tetrahedra it can change come out with a larger smallest angle.
-// Seeds moved in one round share no tetrahedron, so that each move is judged nearly alone; each
-// round clips twice (before and after its moves).
+// sliver tries small moves in random directions (a seed held on the surface slides along it), and
+// takes the first whose new tetrahedra have a larger smallest angle than those it removes. Moves
+// are judged from the seeds' Voronoi cells among their neighbours (local_stars.hpp), so that a try
+// costs a few dozen cells; each round clips the whole mesh once, to find the slivers left.
 SliverPerturbation perturb_slivers(const SurfaceMesh& domain, std::vector<Seed>& seeds, const std::vector<char>& held,
                                    const ClippedOptions& options) {
-  constexpr int kMaxRounds = 40, kIdleRounds = 4;
+  constexpr int kMaxRounds = 30, kIdleRounds = 3, kTries = 16;
   SliverPerturbation stats;
   const RegionLocator locate(domain);
   const MaterialBoundary boundary(domain);
+  LocalStars local(seeds, domain, 2.5 * options.radius);
   const std::size_t n = seeds.size();
   const auto movable = [&](std::uint32_t v) {
     return seeds[v].kind == SeedKind::Interior || (v < held.size() && held[v]);
   };
-  struct Move {
-    std::uint32_t seed;
-    Point from;
-    std::vector<std::uint32_t> around;
-  };
+  std::vector<StarTet> before, after, own;
   for (int idle = 0; stats.rounds < kMaxRounds && idle < kIdleRounds; ++stats.rounds) {
-    const SeedStars before(clip(domain, seeds, options, nullptr).cells, n);
+    const SeedStars mesh(clip(domain, seeds, options, nullptr).cells);
     std::vector<std::uint32_t> slivers;
-    for (std::uint32_t t = 0; t < before.tets.size(); ++t) {
-      if (before.min_dihedral[t] < options.sliver_angle) slivers.push_back(t);
+    for (std::uint32_t t = 0; t < mesh.tets.size(); ++t) {
+      if (mesh.min_dihedral[t] < options.sliver_angle) slivers.push_back(t);
     }
     if (stats.rounds == 0) stats.slivers_before = slivers.size();
     if (slivers.empty()) break;
     std::stable_sort(slivers.begin(), slivers.end(),
-                     [&](std::uint32_t a, std::uint32_t b) { return before.min_dihedral[a] < before.min_dihedral[b]; });
+                     [&](std::uint32_t a, std::uint32_t b) { return mesh.min_dihedral[a] < mesh.min_dihedral[b]; });
     SplitMix64 random = SplitMix64::stream(options.seed, 0x5113e7 + static_cast<std::uint64_t>(stats.rounds));
-    std::vector<char> locked(n, 0);
-    std::vector<Move> moves;
+    std::vector<char> changed(n, 0);  // seeds whose tetrahedra a kept move changed
+    std::size_t kept = 0;
     for (std::uint32_t t : slivers) {
-      const std::array<std::uint32_t, 4>& tet = before.tets[t];
+      const std::array<std::uint32_t, 4>& tet = mesh.tets[t];
+      if (std::any_of(tet.begin(), tet.end(), [&](std::uint32_t v) { return changed[v]; })) continue;
       std::array<std::uint32_t, 4> free{};
       int count = 0;
       for (std::uint32_t v : tet) {
-        if (movable(v) && !locked[v]) free[count++] = v;
+        if (movable(v)) free[count++] = v;
       }
       if (count == 0) continue;
-      const std::uint32_t v = free[random() % static_cast<std::uint64_t>(count)];
       double edges = 0;
       for (int i = 0; i < 4; ++i) {
         for (int j = i + 1; j < 4; ++j) edges += (seeds[tet[i]].position - seeds[tet[j]].position).norm() / 6;
       }
-      Point direction = Point::Zero();
-      while (direction.squaredNorm() < 1e-4 || direction.squaredNorm() > 0.25) {
-        direction = Point(random.unit(), random.unit(), random.unit()) - Point::Constant(0.5);
-      }
-      Seed& s = seeds[v];
-      const Point step = (0.05 + 0.2 * random.unit()) * edges * direction.normalized();
-      const Point to = v < held.size() && held[v] ? boundary.onto(s.position + step, s.region, kJitter * options.radius)
-                                                  : Point(s.position + step);
-      if (locate.region_of(to) != s.region) continue;
-      Move m{v, s.position, before.closed_neighbourhood(v)};
-      for (std::uint32_t u : m.around) locked[u] = 1;
-      s.position = to;
-      moves.push_back(std::move(m));
-    }
-    stats.moves_tried += moves.size();
-    if (moves.empty()) break;
-    const SeedStars after(clip(domain, seeds, options, nullptr).cells, n);
-    std::size_t kept = 0;
-    for (Move& m : moves) {
-      std::vector<std::uint32_t> around = after.closed_neighbourhood(m.seed);
-      around.insert(around.end(), m.around.begin(), m.around.end());
-      std::sort(around.begin(), around.end());
-      around.erase(std::unique(around.begin(), around.end()), around.end());
-      if (after.worst_about(m.seed, around) > before.worst_about(m.seed, around)) {
-        ++kept;
-      } else {
-        seeds[m.seed].position = m.from;
+      for (int attempt = 0; attempt < kTries; ++attempt) {
+        const std::uint32_t v = free[random() % static_cast<std::uint64_t>(count)];
+        Point direction = Point::Zero();
+        while (direction.squaredNorm() < 1e-4 || direction.squaredNorm() > 0.25) {
+          direction = Point(random.unit(), random.unit(), random.unit()) - Point::Constant(0.5);
+        }
+        Seed& s = seeds[v];
+        const Point from = s.position;
+        const Point step = (0.05 + 0.2 * random.unit()) * edges * direction.normalized();
+        const Point to = v < held.size() && held[v] ? boundary.onto(from + step, s.region, kJitter * options.radius)
+                                                    : Point(from + step);
+        if (locate.region_of(to) != s.region) continue;
+        ++stats.moves_tried;
+        // The seeds whose tetrahedra the move can change: v and its neighbours before and after.
+        std::vector<std::uint32_t> around{v};
+        own.clear();
+        if (!local.star(v, own, around)) continue;
+        local.move(v, to);
+        const bool sure = local.star(v, own, around);
+        std::sort(around.begin(), around.end());
+        around.erase(std::unique(around.begin(), around.end()), around.end());
+        if (!sure || !stars_of(local, around, after)) {
+          local.move(v, from);
+          continue;
+        }
+        local.move(v, from);
+        if (!stars_of(local, around, before)) continue;
+        if (worst_removed(after, before) > worst_removed(before, after)) {
+          local.move(v, to);
+          s.position = to;
+          for (std::uint32_t u : around) changed[u] = 1;
+          ++kept;
+          break;
+        }
       }
     }
     stats.moves_kept += kept;
@@ -347,7 +347,7 @@ ClippedMesh clipped_cells(const SurfaceMesh& domain, const ClippedOptions& optio
   if (options.before_cells) options.before_cells(seeds);
   Clipping c = clip(domain, seeds, options, &phases);
   if (options.sliver_angle > 0) {
-    const SeedStars final(c.cells, c.seeds.size());
+    const SeedStars final(c.cells);
     perturbation.slivers_after = static_cast<std::size_t>(std::count_if(
         final.min_dihedral.begin(), final.min_dihedral.end(), [&](double a) { return a < options.sliver_angle; }));
   }
