@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <unordered_map>
 #include <utility>
 
 #include "core/edge_topology.hpp"
 #include "core/surface_measures.hpp"
 #include "core/split_mix.hpp"
+#include "geometry/cube_hash.hpp"
 #include "seeds/locate_regions.hpp"
 
 namespace vorocrust::clipping {
@@ -16,50 +16,24 @@ namespace {
 
 constexpr double kInset = 1e-3;
 
-// Edge seeds hashed by cubes of side r_e: those within r_e of a point lie in the 27 cubes about it.
-class SeedHash {
- public:
-  explicit SeedHash(double side) : side_(side) {}
-
+// The points of the edge seeds placed so far, hashed by cubes of side r_e: those within r_e of
+// a point lie in the 27 cubes about it.
+struct PlacedPoints {
+  explicit PlacedPoints(double side) : hash(side) {}
   void add(const Point& p) {
-    points_.push_back(p);
-    cubes_[key(cube_of(p))].push_back(points_.size() - 1);
+    hash.insert(static_cast<std::uint32_t>(points.size()), p);
+    points.push_back(p);
   }
-
-  // Calls visit(point) for the seeds in the cubes that a box about [lo, hi] grown by r_e meets.
   template <class Visit>
   void near(const Point& lo, const Point& hi, Visit&& visit) const {
-    const auto a = cube_of(lo - Point::Constant(side_)), b = cube_of(hi + Point::Constant(side_));
-    for (std::int64_t z = a[2]; z <= b[2]; ++z) {
-      for (std::int64_t y = a[1]; y <= b[1]; ++y) {
-        for (std::int64_t x = a[0]; x <= b[0]; ++x) {
-          const auto it = cubes_.find(key({x, y, z}));
-          if (it == cubes_.end()) continue;
-          for (std::size_t i : it->second) visit(points_[i]);
-        }
-      }
-    }
+    hash.near(lo, hi, [&](std::uint32_t i) { visit(points[i]); });
   }
-
-  const std::vector<Point>& points() const { return points_; }
-
- private:
-  std::array<std::int64_t, 3> cube_of(const Point& p) const {
-    return {static_cast<std::int64_t>(std::floor(p.x() / side_)), static_cast<std::int64_t>(std::floor(p.y() / side_)),
-            static_cast<std::int64_t>(std::floor(p.z() / side_))};
-  }
-  static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
-    const auto part = [](std::int64_t v) { return static_cast<std::uint64_t>(v) & 0x1fffffu; };
-    return part(c[0]) | (part(c[1]) << 21) | (part(c[2]) << 42);
-  }
-
-  double side_;
-  std::vector<Point> points_;
-  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cubes_;
+  geometry::CubeHash hash;
+  std::vector<Point> points;
 };
 
 // The parts of segment [a, b], as parameters in [0, 1], farther than r from every seed.
-std::vector<std::pair<double, double>> open_parts(const Point& a, const Point& b, double r, const SeedHash& seeds) {
+std::vector<std::pair<double, double>> open_parts(const Point& a, const Point& b, double r, const PlacedPoints& seeds) {
   const Point d = b - a;
   const double length2 = d.squaredNorm();
   std::vector<std::pair<double, double>> covered;
@@ -133,7 +107,7 @@ std::vector<Seed> reflex_edge_seeds(const SurfaceMesh& domain, std::int32_t mate
     }
   }
   const double r_e = radius / std::sqrt(2.0);
-  SeedHash placed(r_e);
+  PlacedPoints placed(r_e);
   std::vector<Seed> seeds;
   const RegionLocator locate(domain);
   // A seed exactly on the surface would put Voronoi vertices on it, ties the clipping's side tests

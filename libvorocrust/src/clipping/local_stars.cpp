@@ -14,6 +14,7 @@ namespace vorocrust::clipping {
 LocalStars::LocalStars(const std::vector<Seed>& seeds, const SurfaceMesh& domain, double reach)
     : domain_(domain),
       reach_(reach),
+      grid_(reach),
       locate_(domain),
       faces_(geometry::face_tree(domain)),
       clearance_(seeds.size(), -1) {
@@ -22,25 +23,13 @@ LocalStars::LocalStars(const std::vector<Seed>& seeds, const SurfaceMesh& domain
   for (std::uint32_t s = 0; s < seeds.size(); ++s) {
     positions_.push_back(seeds[s].position);
     regions_.push_back(seeds[s].region);
-    grid_[key(seeds[s].position)].push_back(s);
+    grid_.insert(s, seeds[s].position);
   }
-}
-
-std::uint64_t LocalStars::key(const Point& p) const {
-  // 21 bits a coordinate, offset so that negative cubes hash apart from positive ones.
-  std::uint64_t k = 0;
-  for (int d = 0; d < 3; ++d) {
-    const auto c = static_cast<std::int64_t>(std::floor(p[d] / reach_)) + (std::int64_t{1} << 20);
-    k = (k << 21) | (static_cast<std::uint64_t>(c) & ((std::uint64_t{1} << 21) - 1));
-  }
-  return k;
 }
 
 void LocalStars::move(std::uint32_t s, const Point& to) {
-  std::vector<std::uint32_t>& from = grid_[key(positions_[s])];
-  from.erase(std::find(from.begin(), from.end(), s));
+  grid_.move(s, positions_[s], to);
   positions_[s] = to;
-  grid_[key(to)].push_back(s);
   clearance_[s] = -1;
 }
 
@@ -68,23 +57,11 @@ bool LocalStars::star(std::uint32_t s, std::vector<StarTet>& out, std::vector<st
   cell.init(-1, 1, -1, 1, -1, 1);
   // Nearest first: Voro++ then cuts the far ones off with a glance.
   std::vector<std::pair<double, std::uint32_t>> near;
-  const std::uint64_t centre = key(p);
-  const auto c = [&](int d) { return static_cast<std::int64_t>((centre >> (21 * (2 - d))) & ((1 << 21) - 1)); };
-  for (std::int64_t z = c(2) - 1; z <= c(2) + 1; ++z) {
-    for (std::int64_t y = c(1) - 1; y <= c(1) + 1; ++y) {
-      for (std::int64_t x = c(0) - 1; x <= c(0) + 1; ++x) {
-        const std::uint64_t k = (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) |
-                                static_cast<std::uint64_t>(z);
-        const auto it = grid_.find(k);
-        if (it == grid_.end()) continue;
-        for (std::uint32_t w : it->second) {
-          if (w == s || regions_[w] != regions_[s]) continue;
-          const double d2 = (positions_[w] - p).squaredNorm() / (reach_ * reach_);
-          if (d2 < 1) near.emplace_back(d2, w);
-        }
-      }
-    }
-  }
+  grid_.near(p, p, [&](std::uint32_t w) {
+    if (w == s || regions_[w] != regions_[s]) return;
+    const double d2 = (positions_[w] - p).squaredNorm() / (reach_ * reach_);
+    if (d2 < 1) near.emplace_back(d2, w);
+  });
   std::sort(near.begin(), near.end());
   for (const auto& [d2, w] : near) {
     const Point d = (positions_[w] - p) / reach_;

@@ -15,10 +15,10 @@
 
 #include <array>
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "geometry/box_tree.hpp"
+#include "geometry/cube_hash.hpp"
 #include "seeds/locate_regions.hpp"
 #include "vorocrust/seeds.hpp"
 #include "vorocrust/surface_mesh.hpp"
@@ -42,7 +42,6 @@ class LocalStars {
   [[nodiscard]] bool star(std::uint32_t s, std::vector<StarTet>& out, std::vector<std::uint32_t>& neighbours) const;
 
  private:
-  std::uint64_t key(const Point& p) const;
   // Distance from seed s to its material's boundary (cached until s moves): a cell vertex
   // nearer s than that is inside the material without a ray.
   double clearance(std::uint32_t s) const;
@@ -51,7 +50,7 @@ class LocalStars {
   double reach_;
   std::vector<Point> positions_;
   std::vector<std::int32_t> regions_;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> grid_;
+  geometry::CubeHash grid_;
   RegionLocator locate_;
   geometry::BoxTree faces_;
   mutable std::vector<double> clearance_;  // negative: not yet measured
