@@ -222,7 +222,7 @@ def write_outputs(result, folder, formats=None, cells=None):
 
     formats: names from OUTPUT_FORMATS ("balls", "seeds", "obj", "ply", "svg", "html", "report",
         "vtu", "openfoam", "tough", "pflotran", "exodus", "tets"); None for every one the run has the parts for
-        ("tets" for a clipped run only). Asking for a part the
+        ("tets" is written for a clipped run only). Asking for a part the
         run did not make (cells after stop_after="surface") raises UsageError and writes
         nothing.
     cells: the Cells to write the volume formats from, instead of result.cells: e.g.
@@ -234,10 +234,10 @@ def write_outputs(result, folder, formats=None, cells=None):
     parts = {"run": result, "balls": result.balls, "seeds": result.seeds, "surface": result.surface,
              "cells": result.cells if cells is None else cells}
     if formats is None:
-        # The dual tetrahedra belong to a clipped mesh, as `vorocrust mesh` writes them.
-        clipped = result.report()["options"].get("method") == "clipped"
-        formats = [name for name in OUTPUT_FORMATS
-                   if parts[_FORMAT_PARTS[name]] is not None and (name != "tets" or clipped)]
+        formats = [name for name in OUTPUT_FORMATS if parts[_FORMAT_PARTS[name]] is not None]
+    # The dual tetrahedra belong to a clipped mesh: as `vorocrust mesh`, a VoroCrust run writes none.
+    if result.report()["options"].get("method") != "clipped":
+        formats = [name for name in formats if name != "tets"]
     return write_files(folder, formats, **parts)
 
 

@@ -38,6 +38,7 @@ TEST(DualTets, ShapesOfKnownTetrahedra) {
   EXPECT_NEAR(regular.radius_ratio, 1, 1e-12);
   EXPECT_NEAR(regular.q4, 1, 1e-12);
   EXPECT_NEAR(regular.volume, 8.0 / 3, 1e-12);
+  EXPECT_NEAR(regular.circumradius, std::sqrt(3.0), 1e-12);
   // A sliver: four corners of a square, two lifted a little.
   const clipping::TetShape sliver =
       clipping::tet_shape(Point(0, 0, 0), Point(1, 1, 0), Point(1, 0, 0.01), Point(0, 1, 0.01));
@@ -50,6 +51,7 @@ TEST(DualTets, ShapesOfKnownTetrahedra) {
   const clipping::TetShape corner = clipping::tet_shape(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1));
   EXPECT_NEAR(corner.max_dihedral, 90, 1e-9);
   EXPECT_NEAR(corner.min_dihedral, std::acos(1 / std::sqrt(3.0)) * 180 / std::numbers::pi, 1e-9);
+  EXPECT_NEAR(corner.circumradius, std::sqrt(3.0) / 2, 1e-12);
 }
 
 // Random sites in a box: the dual tetrahedra are exactly the four-site sets whose circumsphere

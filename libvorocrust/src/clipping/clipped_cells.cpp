@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <optional>
 
 #include "clipping/dual_tets.hpp"
 #include "clipping/edge_seeds.hpp"
@@ -179,17 +180,20 @@ std::vector<char> lloyd_iterations(const SurfaceMesh& domain, std::vector<Seed>&
 }
 
 // The dual tetrahedra of one clipping (dual_tets.hpp) by their seeds, with their smallest
-// dihedral angles.
+// dihedral angles, and the largest of their circumspheres.
 struct SeedStars {
   std::vector<std::array<std::uint32_t, 4>> tets;
   std::vector<double> min_dihedral;
+  double largest_circumradius = 0;
 
   explicit SeedStars(const VoronoiMesh& cells) {
     for (const std::array<std::uint32_t, 4>& t : dual_tets(cells).tets) {
       std::array<std::uint32_t, 4> s;
       for (int k = 0; k < 4; ++k) s[k] = static_cast<std::uint32_t>(cells.cells[t[k]].seed);
       const auto at = [&](int k) -> const Point& { return cells.cells[t[k]].site; };
-      min_dihedral.push_back(tet_shape(at(0), at(1), at(2), at(3)).min_dihedral);
+      const TetShape shape = tet_shape(at(0), at(1), at(2), at(3));
+      min_dihedral.push_back(shape.min_dihedral);
+      largest_circumradius = std::max(largest_circumradius, shape.circumradius);
       tets.push_back(s);
     }
   }
@@ -230,7 +234,7 @@ SliverPerturbation perturb_slivers(const SurfaceMesh& domain, std::vector<Seed>&
   SliverPerturbation stats;
   const RegionLocator locate(domain);
   const MaterialBoundary boundary(domain);
-  LocalStars local(seeds, domain, 2.5 * options.radius);
+  std::optional<LocalStars> local;  // its reach from the first clipping's tetrahedra
   const std::size_t n = seeds.size();
   const auto movable = [&](std::uint32_t v) {
     return seeds[v].kind == SeedKind::Interior || (v < held.size() && held[v]);
@@ -244,6 +248,8 @@ SliverPerturbation perturb_slivers(const SurfaceMesh& domain, std::vector<Seed>&
     }
     if (stats.rounds == 0) stats.slivers_before = slivers.size();
     if (slivers.empty()) break;
+    // Moves change the spheres by a fraction of an edge: 2.5 times the largest covers twice it.
+    if (!local) local.emplace(seeds, domain, 2.5 * mesh.largest_circumradius);
     std::stable_sort(slivers.begin(), slivers.end(),
                      [&](std::uint32_t a, std::uint32_t b) { return mesh.min_dihedral[a] < mesh.min_dihedral[b]; });
     SplitMix64 random = SplitMix64::stream(options.seed, 0x5113e7 + static_cast<std::uint64_t>(stats.rounds));
@@ -278,19 +284,19 @@ SliverPerturbation perturb_slivers(const SurfaceMesh& domain, std::vector<Seed>&
         // The seeds whose tetrahedra the move can change: v and its neighbours before and after.
         std::vector<std::uint32_t> around{v};
         own.clear();
-        if (!local.star(v, own, around)) continue;
-        local.move(v, to);
-        const bool sure = local.star(v, own, around);
+        if (!local->star(v, own, around)) continue;
+        local->move(v, to);
+        const bool sure = local->star(v, own, around);
         std::sort(around.begin(), around.end());
         around.erase(std::unique(around.begin(), around.end()), around.end());
-        if (!sure || !stars_of(local, around, after)) {
-          local.move(v, from);
+        if (!sure || !stars_of(*local, around, after)) {
+          local->move(v, from);
           continue;
         }
-        local.move(v, from);
-        if (!stars_of(local, around, before)) continue;
+        local->move(v, from);
+        if (!stars_of(*local, around, before)) continue;
         if (worst_removed(after, before) > worst_removed(before, after)) {
-          local.move(v, to);
+          local->move(v, to);
           s.position = to;
           for (std::uint32_t u : around) changed[u] = 1;
           ++kept;

@@ -20,10 +20,11 @@
 // - with options.sliver_angle > 0, Yan et al.'s post-processing: in rounds, a seed of each dual
 //   tetrahedron (dual_tets.hpp) whose smallest dihedral angle is below it tries small random
 //   moves, up to 16, and keeps the first whose new tetrahedra are better than those it removes,
-//   judged from the Voronoi cells of the seed and its neighbours (local_stars.hpp). Interior seeds
-//   move, and those the constrained phase holds, which slide along the surface (phase "sliver
-//   perturbation"). It stops when no tetrahedron is below the angle, when three rounds running
-//   keep no move, or after 30 rounds; what it did is in the stats' `slivers`.
+//   judged from the Voronoi cells of the seed and its neighbours (local_stars.hpp; a tetrahedron
+//   counts as changed when a seed of it moved). Interior seeds move, and those the constrained
+//   phase holds, which slide along the surface (phase "sliver perturbation"). It stops when no
+//   tetrahedron is below the angle, when three rounds running keep no move, or after 30 rounds;
+//   what it did is in the stats' `slivers`.
 // - then each material's Voronoi cells of its seeds and outside seeds 1.5 radii beyond the
 //   domain's box (phase "cells"), cut to the materials (clip_cells.hpp; phase "clipping"). Where
 //   an outside seed is nearer part of the surface than every material seed, the outside seeds

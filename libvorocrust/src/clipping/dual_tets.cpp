@@ -78,6 +78,7 @@ TetShape tet_shape(const Point& a, const Point& b, const Point& c, const Point& 
   const double circumradius = s.volume > 0 ? Point(m.fullPivLu().solve(rhs)).norm() : 0;
   const double inradius = faces_area > 0 ? 3 * s.volume / faces_area : 0;
   s.radius_ratio = circumradius > 0 ? 3 * inradius / circumradius : 0;
+  s.circumradius = circumradius;
   double squares = 0;
   for (int i = 0; i < 4; ++i) {
     for (int j = i + 1; j < 4; ++j) squares += (v[i] - v[j]).squaredNorm();

@@ -39,6 +39,7 @@ DualTets dual_tets(const VoronoiMesh& clipped);
 struct TetShape {
   double min_dihedral = 0, max_dihedral = 0;  // degrees
   double radius_ratio = 0;                    // Q3
+  double circumradius = 0;
   double q4 = 0;
   double volume = 0;
 };

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cells/raw_cell_extract.hpp"
 #include "clipping/dual_tets.hpp"

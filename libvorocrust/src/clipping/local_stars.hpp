@@ -10,7 +10,9 @@
 //   dual_tets.hpp reads from the clipped mesh), and the seeds across its faces. It returns false
 //   where it cannot be sure: a vertex inside the material with a Delaunay sphere reaching past
 //   `reach`, a vertex of more than three faces (cospherical seeds), or a Voro++ cell whose edges
-//   disagree.
+//   disagree. A seed farther than `reach` could still add a vertex inside the material where the
+//   local cell has one outside it, at least reach / 2 from s: callers take `reach` above twice
+//   the largest Delaunay sphere inside the material (its points' farthest from a seed).
 #pragma once
 
 #include <array>
@@ -28,8 +30,11 @@ namespace vorocrust::clipping {
 struct StarTet {
   std::array<std::uint32_t, 4> seeds;  // ascending
   double min_dihedral;
-  bool operator<(const StarTet& o) const { return seeds < o.seeds; }
-  bool operator==(const StarTet& o) const { return seeds == o.seeds; }
+  // A tetrahedron whose seeds stay but one of which moved is another: its shape changed.
+  bool operator<(const StarTet& o) const {
+    return seeds < o.seeds || (seeds == o.seeds && min_dihedral < o.min_dihedral);
+  }
+  bool operator==(const StarTet& o) const { return seeds == o.seeds && min_dihedral == o.min_dihedral; }
 };
 
 class LocalStars {
