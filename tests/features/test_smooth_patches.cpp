@@ -145,6 +145,19 @@ void expect_invariants(const Smoothing& run) {
   ASSERT_EQ(out.triangles.size(), out.face_line.size());
   ASSERT_EQ(out.has_regions(), in.has_regions());
   if (out.has_regions()) { ASSERT_EQ(out.face_regions.size(), out.triangles.size()); }
+  // Each child is named in messages as its parent is (by the face as read that the parent came
+  // from, and its line); every face has a child.
+  ASSERT_TRUE(out.face_source.empty() || out.face_source.size() == out.triangles.size());
+  std::map<Index, std::string> named;
+  for (std::size_t p = 0; p < in.num_faces(); ++p) named[in.source_face(p)] = describe_face(in, p);
+  std::set<Index> with_child;
+  for (std::size_t f = 0; f < out.num_faces(); ++f) {
+    const auto it = named.find(out.source_face(f));
+    ASSERT_NE(it, named.end()) << f;
+    EXPECT_EQ(describe_face(out, f), it->second) << f;
+    with_child.insert(it->first);
+  }
+  EXPECT_EQ(with_child.size(), named.size()) << "faces with no child";
 
   EXPECT_EQ(run.out.corners, s.corners);
   for (Index c : s.corners) EXPECT_EQ(out.vertices[c], in.vertices[c]) << "corner " << c << " moved";

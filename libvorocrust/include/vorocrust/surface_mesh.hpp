@@ -46,11 +46,18 @@ struct VOROCRUST_API SurfaceMesh {
   // 1-based line of each triangle in its source file, 0 where unknown (binary formats).
   std::vector<std::uint32_t> face_line;
   std::vector<RegionPair> face_regions;  // empty, or one per triangle
+  // Where triangles were made from others (smoothing subdivides faces, resolving self-intersections
+  // cuts them): the face of the model as read that each came from, which messages name with its
+  // line. Empty: each triangle is a face as read.
+  std::vector<Index> face_source;
   std::vector<std::string> region_names;
 
   std::size_t num_vertices() const { return vertices.size(); }
   std::size_t num_faces() const { return triangles.size(); }
   bool has_regions() const { return !face_regions.empty(); }
+  Index source_face(std::size_t face) const {
+    return face < face_source.size() ? face_source[face] : static_cast<Index>(face);
+  }
 
   // Appends a triangle with its group and source line, keeping the per-face arrays aligned.
   void add_triangle(const Triangle& t, Index group, std::uint32_t line = 0);

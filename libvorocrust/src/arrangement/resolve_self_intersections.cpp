@@ -46,6 +46,7 @@ SurfaceMesh cut_faces(const SurfaceMesh& mesh, const arrangement::FaceCuts& cuts
     }
     for (const Triangle& t : pieces) {
       arranged.add_triangle(t, group, line);
+      arranged.face_source.push_back(mesh.source_face(f));
       parent.push_back(f);
     }
   }
@@ -178,6 +179,7 @@ SurfaceMesh resolve_self_intersections(const SurfaceMesh& mesh, SelfIntersection
       v = vertex_of[v];
     }
     resolved.add_triangle(t, arranged.face_group[f], arranged.face_line[f]);
+    resolved.face_source.push_back(arranged.face_source[f]);
     face_regions.push_back(sides);
   }
   resolved.face_regions = std::move(face_regions);

@@ -22,7 +22,7 @@ void SurfaceMesh::flip(std::size_t face) {
 std::string describe_point(const Point& p) { return c_format("(%.9g, %.9g, %.9g)", p.x(), p.y(), p.z()); }
 
 std::string describe_face(const SurfaceMesh& mesh, std::size_t face) {
-  std::string text = "face " + std::to_string(face);
+  std::string text = "face " + std::to_string(mesh.source_face(face));
   if (face < mesh.face_group.size() && mesh.face_group[face] < mesh.groups.size()) {
     const std::string& file = mesh.groups[mesh.face_group[face]].source_file;
     const std::uint32_t line = face < mesh.face_line.size() ? mesh.face_line[face] : 0;

@@ -458,6 +458,7 @@ std::size_t refine_once(Refinement& r, const SmoothingOptions& options, Rule rul
   out.triangles.reserve(result_faces);
   out.face_group.reserve(result_faces);
   out.face_line.reserve(result_faces);
+  out.face_source.reserve(result_faces);
   if (mesh.has_regions()) out.face_regions.reserve(result_faces);
   std::vector<std::int32_t> out_face_pair;
   out_face_pair.reserve(result_faces);
@@ -466,6 +467,7 @@ std::size_t refine_once(Refinement& r, const SmoothingOptions& options, Rule rul
     out.triangles.push_back(t);
     out.face_group.push_back(mesh.face_group[source]);
     out.face_line.push_back(mesh.face_line[source]);
+    out.face_source.push_back(mesh.source_face(source));
     if (mesh.has_regions()) out.face_regions.push_back(mesh.face_regions[source]);
     out_face_pair.push_back(kNoPair);
     return static_cast<Index>(out.triangles.size() - 1);
