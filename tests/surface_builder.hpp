@@ -1,11 +1,16 @@
-// Surfaces built in code from boxes and quads, for the tests of stages that take a SurfaceMesh.
+// Surfaces built in code from boxes, quads and a subdivided icosahedron, for the tests of stages that
+// take a SurfaceMesh.
 #pragma once
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <map>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "vorocrust/surface_mesh.hpp"
+#include "vorocrust/validate.hpp"
 
 namespace vorocrust::test {
 
@@ -47,5 +52,38 @@ class SurfaceBuilder {
  private:
   std::map<std::tuple<double, double, double>, Index> index_;
 };
+
+// A smooth model: a subdivided icosahedron on the unit sphere (20 * 4^subdivisions faces), one
+// patch, no creases, validated.
+inline SurfaceMesh icosphere(int subdivisions) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Point> v = {{-1, g, 0},  {1, g, 0},  {-1, -g, 0}, {1, -g, 0}, {0, -1, g},  {0, 1, g},
+                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1},  {g, 0, 1},  {-g, 0, -1}, {-g, 0, 1}};
+  std::vector<Triangle> t = {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                             {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+                             {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
+  for (Point& p : v) p.normalize();
+  for (int level = 0; level < subdivisions; ++level) {
+    std::map<std::pair<Index, Index>, Index> middle;
+    auto mid = [&](Index a, Index b) {
+      const auto key = std::minmax(a, b);
+      auto [it, fresh] = middle.try_emplace({key.first, key.second}, static_cast<Index>(v.size()));
+      if (fresh) v.push_back((v[a] + v[b]).normalized());
+      return it->second;
+    };
+    std::vector<Triangle> finer;
+    for (const Triangle& f : t) {
+      const Index ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
+      finer.insert(finer.end(), {{f[0], ab, ca}, {f[1], bc, ab}, {f[2], ca, bc}, {ab, bc, ca}});
+    }
+    t = std::move(finer);
+  }
+  SurfaceMesh mesh;
+  mesh.vertices = v;
+  mesh.groups.push_back({"sphere", ""});
+  for (const Triangle& f : t) mesh.add_triangle(f, 0);
+  (void)validate(mesh);
+  return mesh;
+}
 
 }  // namespace vorocrust::test

@@ -128,19 +128,22 @@ class SkinnyTriangles(unittest.TestCase):
         slivers = split["slivers"]
         self.assertGreater(slivers["skinny_triangle_rounds"], 0)
         self.assertLessEqual(slivers["skinny_triangle_rounds"], 10)
-        # Each round says what it shrank for: slivers while a pair is half-covered, skinny
-        # triangles only once none is; the last shrinks nothing.
+        # Each round says what it shrank for: slivers while a pair is half-covered, near-twin seeds
+        # or skinny triangles only once none is; the last shrinks nothing.
         rounds = slivers["per_iteration"]
-        self.assertEqual(slivers["sliver_rounds"] + slivers["skinny_triangle_rounds"], slivers["iterations"])
+        self.assertEqual(slivers["sliver_rounds"] + slivers["near_twin_rounds"] + slivers["skinny_triangle_rounds"],
+                         slivers["iterations"])
         self.assertEqual(sum(it["shrunk_for"] == "skinny_triangles" for it in rounds), slivers["skinny_triangle_rounds"])
+        self.assertEqual(sum(it["shrunk_for"] == "near_twins" for it in rounds), slivers["near_twin_rounds"])
         self.assertEqual(rounds[-1]["shrunk_for"], "nothing")
         for it in rounds[:-1]:
             if it["shrunk_for"] == "slivers":
                 self.assertGreater(it["half_covered"], 0)
-            else:
-                self.assertEqual((it["shrunk_for"], it["half_covered"]), ("skinny_triangles", 0))
-                self.assertGreater(it["skinny_triangles"], 0)
-                self.assertGreater(it["balls_shrunk"], 0)
+                continue
+            self.assertIn(it["shrunk_for"], ("skinny_triangles", "near_twins"))
+            self.assertEqual(it["half_covered"], 0)
+            self.assertGreater(it[it["shrunk_for"]], 0)
+            self.assertGreater(it["balls_shrunk"], 0)
         self.assertGreater(split["refinement"]["skinny_triangle_shrinks"], 0)
         self.assertEqual(slivers["half_covered_left"], 0)
         self.assertFalse(slivers["safe_mode"])

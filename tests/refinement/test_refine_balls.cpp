@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
+#include "surface_builder.hpp"
 #include "test_support.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/mesher.hpp"
@@ -86,6 +88,23 @@ TEST(RefineBalls, SmallerLipschitzGivesMoreBalls) {
     EXPECT_GT(r.balls.size(), previous) << "L = " << L;
     previous = r.balls.size();
   }
+}
+
+// Every face of the input starts as a piece awaiting darts. A pass that stopped at its first run
+// of misses left most of a finely tessellated surface's pieces without a dart, and the pool then
+// grew four times a level (a smoothed scan: 44 million pieces after four levels, refused as a
+// refinement that cannot converge); at least a dart per piece keeps it near the face count.
+TEST(RefineBalls, PoolOfAFinelyTessellatedSurfaceStaysNearItsFaceCount) {
+  SurfaceMesh sphere = test::icosphere(6);  // 81 920 faces, edges about 0.03 long
+  MeshOptions options;
+  options.stop_after = Stage::Balls;
+  options.max_size = 0.02;  // balls about the size of the faces
+  const MeshResult r = generate_mesh(sphere, options);
+  ASSERT_TRUE(r.refinement.converged);
+  EXPECT_EQ(r.refinement.balls[0] + r.refinement.balls[1], 0u);
+  std::printf("[refine] icosphere(6): %zu balls, largest pool %zu pieces\n", r.balls.size(), r.refinement.largest_pool);
+  EXPECT_LE(r.refinement.largest_pool, 2 * sphere.num_faces());
+  expect_pairwise_conditions(r.balls, 0.25);
 }
 
 TEST(RefineBalls, MaxSizeBoundsEveryRadius) {

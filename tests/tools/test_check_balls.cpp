@@ -10,6 +10,7 @@
 
 #include "check_balls/check_balls.hpp"
 #include "check_balls/strata.hpp"
+#include "surface_builder.hpp"
 #include "test_support.hpp"
 #include "vorocrust/error.hpp"
 #include "vorocrust/read_mesh.hpp"
@@ -235,38 +236,6 @@ TEST(CheckBalls, EqualSeedsGiveEqualReports) {
   EXPECT_EQ(a[Condition::C4a].count, b[Condition::C4a].count);
 }
 
-// A smooth model: a subdivided icosahedron on the unit sphere, one patch, no creases.
-SurfaceMesh icosphere(int subdivisions) {
-  const double g = (1 + std::sqrt(5.0)) / 2;
-  std::vector<Point> v = {{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
-                          {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
-  std::vector<Triangle> t = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-                             {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-                             {3, 8, 9},  {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (Point& p : v) p.normalize();
-  for (int level = 0; level < subdivisions; ++level) {
-    std::map<std::pair<Index, Index>, Index> middle;
-    auto mid = [&](Index a, Index b) {
-      const auto key = std::minmax(a, b);
-      auto [it, fresh] = middle.try_emplace({key.first, key.second}, static_cast<Index>(v.size()));
-      if (fresh) v.push_back((v[a] + v[b]).normalized());
-      return it->second;
-    };
-    std::vector<Triangle> finer;
-    for (const Triangle& f : t) {
-      const Index ab = mid(f[0], f[1]), bc = mid(f[1], f[2]), ca = mid(f[2], f[0]);
-      finer.insert(finer.end(), {{f[0], ab, ca}, {f[1], bc, ab}, {f[2], ca, bc}, {ab, bc, ca}});
-    }
-    t = std::move(finer);
-  }
-  SurfaceMesh mesh;
-  mesh.vertices = v;
-  mesh.groups.push_back({"sphere", ""});
-  for (const Triangle& f : t) mesh.add_triangle(f, 0);
-  (void)validate(mesh);
-  return mesh;
-}
-
 // One ball per vertex, all of one radius between what deep coverage needs (every triangle's
 // circumradius within (1 - alpha) r) and what C4b allows (every edge at least (1 - alpha) r).
 std::vector<CheckedBall> vertex_balls(const SurfaceMesh& mesh) {
@@ -286,7 +255,7 @@ std::vector<CheckedBall> vertex_balls(const SurfaceMesh& mesh) {
 }
 
 TEST(CheckBalls, CorrectSmoothConfigurationPasses) {
-  const SurfaceMesh sphere = icosphere(3);
+  const SurfaceMesh sphere = test::icosphere(3);
   const BallCheckReport r = check_balls(sphere, vertex_balls(sphere), fast_options());
   EXPECT_EQ(r.corners + r.creases, 0u);
   EXPECT_EQ(r.patches, 1u);
@@ -294,7 +263,7 @@ TEST(CheckBalls, CorrectSmoothConfigurationPasses) {
 }
 
 TEST(CheckBalls, BallTooBigForTheCurvatureBreaksC1) {
-  const SurfaceMesh sphere = icosphere(3);
+  const SurfaceMesh sphere = test::icosphere(3);
   std::vector<CheckedBall> balls = vertex_balls(sphere);
   balls[5].radius = 1.0;  // holds points whose normals turn by 60 degrees
   const BallCheckReport r = check_balls(sphere, balls, fast_options());

@@ -27,6 +27,10 @@ struct VOROCRUST_API RefinementStats {
   std::size_t darts = 0;
   std::size_t rejected_for_density = 0;
   std::size_t subdivisions = 0;
+  // The most pieces of the surface awaiting darts at once, over all passes: the refinement's memory
+  // beside its balls (a pool that outgrows the surface's faces many times is refused as one that
+  // cannot converge).
+  std::size_t largest_pool = 0;
   std::size_t c1_shrinks = 0;  // balls shrunk for C1/C2 (non-co-smooth contents)
   std::size_t c3_shrinks = 0;  // balls shrunk for the Lipschitz condition
   std::size_t sliver_shrinks = 0;  // balls shrunk to eliminate slivers (paper 2.4)

@@ -398,6 +398,7 @@ std::string run_report_json(const RunReport& report, int indent) {
         {"darts", r.darts},
         {"rejected_for_density", r.rejected_for_density},
         {"subdivisions", r.subdivisions},
+        {"largest_pool", r.largest_pool},
         {"c1_shrinks", r.c1_shrinks},
         {"c3_shrinks", r.c3_shrinks},
         {"sliver_shrinks", r.sliver_shrinks},
