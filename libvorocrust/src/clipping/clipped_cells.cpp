@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <iterator>
-#include <limits>
 #include <optional>
 
 #include "clipping/dual_tets.hpp"
@@ -15,7 +14,7 @@
 #include "core/split_mix.hpp"
 #include "core/surface_measures.hpp"
 #include "geometry/box_tree.hpp"
-#include "geometry/closest_point.hpp"
+#include "geometry/nearest_face.hpp"
 #include "geometry/point_cloud.hpp"
 #include "seeds/locate_regions.hpp"
 #include "vorocrust/cells.hpp"
@@ -122,23 +121,16 @@ class MaterialBoundary {
   explicit MaterialBoundary(const SurfaceMesh& domain) : domain_(domain), tree_(geometry::face_tree(domain)) {}
 
   Point onto(const Point& p, std::int32_t material, double inset) const {
-    const auto [face, squared] = tree_.nearest(p, [&](std::uint32_t f) {
-      const RegionPair& r = domain_.face_regions[f];
-      if (r.back == r.front || (r.back != material && r.front != material)) return kInfinity;
-      return (closest(p, f) - p).squaredNorm();
-    });
+    const std::uint32_t face = geometry::nearest_face(tree_, domain_, p, [&](std::uint32_t f) {
+      return geometry::bounds_material(domain_.face_regions[f], material);
+    }).first;
     if (face == geometry::BoxTree::kNoItem) return p;
     Point inward = face_normal(domain_, face);
     if (domain_.face_regions[face].back == material) inward = -inward;
-    return closest(p, face) + inset * inward;
+    return geometry::closest_on_face(domain_, face, p) + inset * inward;
   }
 
  private:
-  static constexpr double kInfinity = std::numeric_limits<double>::infinity();
-  Point closest(const Point& p, std::uint32_t f) const {
-    const Triangle& t = domain_.triangles[f];
-    return geometry::closest_on_triangle(p, domain_.vertices[t[0]], domain_.vertices[t[1]], domain_.vertices[t[2]]);
-  }
   const SurfaceMesh& domain_;
   geometry::BoxTree tree_;
 };

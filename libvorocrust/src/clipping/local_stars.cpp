@@ -8,7 +8,7 @@
 
 #include "cells/raw_cell_extract.hpp"
 #include "clipping/dual_tets.hpp"
-#include "geometry/closest_point.hpp"
+#include "geometry/nearest_face.hpp"
 
 namespace vorocrust::clipping {
 
@@ -38,13 +38,8 @@ double LocalStars::clearance(std::uint32_t s) const {
   if (clearance_[s] < 0) {
     const Point& p = positions_[s];
     const std::int32_t material = regions_[s];
-    const auto [face, squared] = faces_.nearest(p, [&](std::uint32_t f) {
-      const RegionPair& r = domain_.face_regions[f];
-      if ((r.back == material) == (r.front == material)) return std::numeric_limits<double>::infinity();
-      const Triangle& t = domain_.triangles[f];
-      return (geometry::closest_on_triangle(p, domain_.vertices[t[0]], domain_.vertices[t[1]], domain_.vertices[t[2]]) -
-              p)
-          .squaredNorm();
+    const auto [face, squared] = geometry::nearest_face(faces_, domain_, p, [&](std::uint32_t f) {
+      return geometry::bounds_material(domain_.face_regions[f], material);
     });
     clearance_[s] = face == geometry::BoxTree::kNoItem ? std::numeric_limits<double>::infinity() : std::sqrt(squared);
   }

@@ -8,6 +8,7 @@
 #include "core/c_format.hpp"
 #include "core/split_mix.hpp"
 #include "geometry/box_tree.hpp"
+#include "geometry/nearest_face.hpp"
 #include "seeds/locate_regions.hpp"
 #include "vorocrust/error.hpp"
 
@@ -21,20 +22,6 @@ struct Cube {
   Point lo;
   bool near_surface = false;  // the surface may cross it
 };
-
-// The faces that bound `material`: a cube none of them crosses lies wholly inside it or outside,
-// whatever other regions' faces cross it.
-geometry::BoxTree boundary_tree(const SurfaceMesh& domain, std::int32_t material) {
-  std::vector<geometry::Box> boxes(domain.num_faces());
-  std::vector<std::uint32_t> faces;
-  for (std::uint32_t f = 0; f < domain.num_faces(); ++f) {
-    const RegionPair& r = domain.face_regions[f];
-    if ((r.back == material) == (r.front == material)) continue;
-    for (Index v : domain.triangles[f]) boxes[f].include(domain.vertices[v]);
-    faces.push_back(f);
-  }
-  return {std::move(boxes), std::move(faces)};
-}
 
 geometry::Box box_of(const SurfaceMesh& domain) {
   geometry::Box box;
@@ -50,7 +37,7 @@ class Sampler {
         r_(radius),
         side_(radius / std::sqrt(3.0)),
         locate_(domain),
-        faces_(boundary_tree(domain, material)),
+        faces_(geometry::boundary_tree(domain, material)),
         random_(seed) {
     const geometry::Box box = box_of(domain);
     lo_ = box.lo;

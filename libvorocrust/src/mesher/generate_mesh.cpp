@@ -17,7 +17,7 @@
 #include "core/phases.hpp"
 #include "features/surface_features.hpp"
 #include "geometry/box_tree.hpp"
-#include "geometry/closest_point.hpp"
+#include "geometry/nearest_face.hpp"
 #include "interior/interior_seeds.hpp"
 #include "io/enclose_in_box.hpp"
 #include "refinement/refine_balls.hpp"
@@ -230,12 +230,7 @@ void refuse_sheets(const SurfaceMesh& input) {
 
 // The input face nearest `p` and its distance.
 std::pair<std::uint32_t, double> nearest_face(const SurfaceMesh& mesh, const Point& p) {
-  const geometry::BoxTree faces = geometry::face_tree(mesh);
-  const auto [face, squared] = faces.nearest(p, [&](std::uint32_t f) {
-    const Triangle& t = mesh.triangles[f];
-    return (geometry::closest_on_triangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]) - p)
-        .squaredNorm();
-  });
+  const auto [face, squared] = geometry::nearest_face(geometry::face_tree(mesh), mesh, p);
   return {face, std::sqrt(squared)};
 }
 

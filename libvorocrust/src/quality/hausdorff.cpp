@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "geometry/closest_point.hpp"
+#include "geometry/nearest_face.hpp"
 #include "geometry/curve_order.hpp"
 #include "geometry/surface_sampling.hpp"
 
@@ -72,11 +72,8 @@ double farthest_sample_distance(const std::vector<Point>& samples, const Surface
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const Point& p = samples[i];
       double known = farthest_squared.load(std::memory_order_relaxed);
-      const double squared = faces.nearest(p, [&](std::uint32_t f) {
-        const Triangle& t = to.triangles[f];
-        return (geometry::closest_on_triangle(p, to.vertices[t[0]], to.vertices[t[1]], to.vertices[t[2]]) - p)
-            .squaredNorm();
-      }, std::max(known, negligible_squared)).second;
+      const double squared =
+          geometry::nearest_face(faces, to, p, geometry::EveryFace{}, std::max(known, negligible_squared)).second;
       if (squared <= negligible_squared) continue;
       while (squared > known && !farthest_squared.compare_exchange_weak(known, squared, std::memory_order_relaxed)) {
       }
