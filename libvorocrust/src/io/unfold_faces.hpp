@@ -12,11 +12,13 @@
 // Contract of unfold_faces(mesh, fixed): moves the free corners of folded faces (not `fixed`,
 // not on a boundary or non-manifold edge) in turns, each to where its faces bend least (searched
 // from where it is and from the centroid of its neighbours), until no turn lowers the largest
-// bend about the fold; up to kUnfoldRounds rounds while any face is folded. A move that would
-// fold another face, or make one of the vertex's faces cross a face it did not cross (exactly
-// decided), is not made. Faces, their order and their vertices' indices stay. Returns the faces
-// found folded first, whether all were unfolded, and how far the farthest vertex moved. Moves
-// stay within the folded faces' one rings: a change of the size of the defect.
+// bend about the fold; up to kUnfoldRounds rounds while any face is folded. No place is taken
+// where one of the vertex's faces is flatter (height over longest edge) than a twentieth, or than
+// the flattest of them was. A move that would fold another face, or make one of the vertex's faces
+// cross a face it did not cross (exactly decided), is not made. Faces, their order and their
+// vertices' indices stay. Returns the faces found folded first, whether all were unfolded, and how
+// far the farthest vertex moved. Moves stay within the folded faces' one rings: a change of the
+// size of the defect.
 #pragma once
 
 #include <vector>
