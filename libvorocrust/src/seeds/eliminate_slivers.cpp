@@ -105,9 +105,7 @@ Error unending_slivers(const BallIndex& balls, const SeedPairs& pairs, int round
 SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& options, const ProgressCallback& progress,
                             SliverStats& stats) {
   using Clock = std::chrono::steady_clock;
-  // The guard counts every sliver round; safe mode those since the last split (each split can
-  // ask for a few rounds of its own, and igl_bunny takes 53 in all).
-  int sliver_rounds = 0, sliver_rounds_in_a_row = 0;
+  int sliver_rounds = 0;
   for (;;) {
     if (progress && !progress({"slivers", -1})) throw Error(Error::Kind::Cancelled, "cancelled during sliver elimination");
     const auto start = Clock::now();
@@ -133,8 +131,7 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
     };
     if (!pairs.half_covered.empty()) {
       if (sliver_rounds >= options.max_iterations) throw unending_slivers(refinement.index(), pairs, sliver_rounds);
-      ++sliver_rounds;
-      if (sliver_rounds_in_a_row++ == options.iterations_before_safe_mode && !stats.safe_mode) {
+      if (sliver_rounds++ == options.iterations_before_safe_mode) {
         stats.safe_mode = true;
         refinement.relax_deep_coverage();
       }
@@ -147,7 +144,6 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
     record.near_twins = twins.twins;
     if (!twins.shrinks.radii.empty() &&
         stats.rounds_for(SliverIteration::Shrunk::ForNearTwins) < static_cast<std::size_t>(options.max_near_twin_rounds)) {
-      sliver_rounds_in_a_row = 0;
       finish(twins.shrinks, SliverIteration::Shrunk::ForNearTwins);
       continue;
     }
@@ -157,7 +153,6 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
       record.skinny_triangles = skinny.skinny;
       const auto splits = stats.rounds_for(SliverIteration::Shrunk::ForSkinnyTriangles);
       if (splits < static_cast<std::size_t>(options.max_skinny_triangle_rounds) && !skinny.shrinks.radii.empty()) {
-        sliver_rounds_in_a_row = 0;
         finish(skinny.shrinks, SliverIteration::Shrunk::ForSkinnyTriangles);
         continue;
       }
