@@ -141,8 +141,12 @@ std::pair<Point, double> compass_search(SurfaceMesh& mesh, const EdgeTopology& t
                                         const std::vector<Index>& faces, const Point& start, double scale) {
   const Point before = mesh.vertices[v];
   const double fullness_floor = std::min(kLeastFullness, least_fullness(mesh, faces));
+  // Below any cosine: a place that squashes a face is never taken.
+  const auto score = [&] {
+    return least_fullness(mesh, faces) >= fullness_floor ? cos_largest_bend(mesh, topology, faces) : -2.0;
+  };
   mesh.vertices[v] = start;
-  double best = least_fullness(mesh, faces) >= fullness_floor ? cos_largest_bend(mesh, topology, faces) : -2;
+  double best = score();
   for (double step = scale / 4; step > scale / 1000; step /= 2) {
     for (bool improved = true; improved;) {
       improved = false;
@@ -150,7 +154,7 @@ std::pair<Point, double> compass_search(SurfaceMesh& mesh, const EdgeTopology& t
         for (double sign : {1.0, -1.0}) {
           const Point here = mesh.vertices[v];
           mesh.vertices[v][axis] += sign * step;
-          const double c = least_fullness(mesh, faces) >= fullness_floor ? cos_largest_bend(mesh, topology, faces) : -2;
+          const double c = score();
           if (c > best) {
             best = c;
             improved = true;
