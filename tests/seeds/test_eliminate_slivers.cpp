@@ -76,7 +76,8 @@ auto with_joint_balls(Use use) {
   RefinementOptions options;
   options.sharp_angle = 30 * std::numbers::pi / 180;
   RefinementStats stats;
-  BallRefinement refinement(mesh, strata, sizing, options, ProgressCallback(), stats);
+  const ProgressCallback progress;  // the refinement keeps a reference to it, as to the others
+  BallRefinement refinement(mesh, strata, sizing, options, progress, stats);
   refinement.run();
   return use(refinement);
 }
@@ -112,6 +113,35 @@ TEST(SliverElimination, SafeModeCountsTheSliverRoundsAcrossSkinnyTriangleSplits)
   EXPECT_TRUE(bounded.safe_mode) << rounds << " sliver rounds, at most " << longest_run << " in a row";
   EXPECT_EQ(half_covered, 0u);
   EXPECT_NEAR(deep_coverage, 1 - 0.13397459621556135 / 2, 1e-12);  // alpha/2-deep (paper 2.4)
+}
+
+// The pairs kept from round to round are those found afresh, in the same order, while each
+// round finds only a small share of the balls' triplets again.
+TEST(SeedPairs, KeptPairsAreThoseFoundAfreshAfterEachSliverRound) {
+  const auto same_pair = [](const SeedPair& a, const SeedPair& b) { return a.balls == b.balls && a.points == b.points; };
+  with_joint_balls([&](BallRefinement& refinement) {
+    KeptSeedPairs kept;
+    std::size_t rounds = 0, least_found_again = refinement.index().size();
+    for (; rounds < 6; ++rounds) {
+      const SeedPairs& pairs = kept.update(refinement.index());
+      const SeedPairs fresh = find_seed_pairs(refinement.index());
+      ASSERT_EQ(pairs.triplets, fresh.triplets);
+      ASSERT_EQ(pairs.uncovered.size(), fresh.uncovered.size());
+      for (std::size_t i = 0; i < fresh.uncovered.size(); ++i) ASSERT_TRUE(same_pair(pairs.uncovered[i], fresh.uncovered[i])) << i;
+      ASSERT_EQ(pairs.half_covered.size(), fresh.half_covered.size());
+      for (std::size_t i = 0; i < fresh.half_covered.size(); ++i) {
+        const HalfCoveredPair &a = pairs.half_covered[i], &b = fresh.half_covered[i];
+        ASSERT_TRUE(same_pair(a.pair, b.pair) && a.covered == b.covered && a.fourth == b.fourth) << i;
+      }
+      if (rounds > 0) least_found_again = std::min(least_found_again, kept.balls_found_again());
+      if (pairs.half_covered.empty()) break;
+      const BallShrinks shrinks = choose_sliver_shrinks(refinement.index(), pairs.half_covered);
+      for (const auto& [ball, radius] : shrinks.radii) refinement.shrink_for_slivers(ball, radius);
+      refinement.run();
+    }
+    ASSERT_GE(rounds, 2u) << "too few sliver rounds to compare";
+    EXPECT_LT(least_found_again, refinement.index().size() / 4);
+  });
 }
 
 // The guard on the rounds is a refusal that names a face and a place, never an internal error: a

@@ -106,10 +106,11 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
                             SliverStats& stats) {
   using Clock = std::chrono::steady_clock;
   int sliver_rounds = 0;
+  KeptSeedPairs kept;
   for (;;) {
     if (progress && !progress({"slivers", -1})) throw Error(Error::Kind::Cancelled, "cancelled during sliver elimination");
     const auto start = Clock::now();
-    SeedPairs pairs = find_seed_pairs(refinement.index());
+    const SeedPairs& pairs = kept.update(refinement.index());
     SliverIteration record;
     record.triplets = pairs.triplets;
     record.half_covered = pairs.half_covered.size();
@@ -159,7 +160,7 @@ SeedPairs eliminate_slivers(BallRefinement& refinement, const SliverOptions& opt
     }
     record.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     stats.iterations.push_back(record);
-    return pairs;
+    return kept.release();
   }
 }
 

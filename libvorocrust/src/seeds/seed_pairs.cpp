@@ -67,23 +67,90 @@ double mean_radius(const BallIndex& balls, const SeedPair& pair) {
 }
 
 SeedPairs find_seed_pairs(const BallIndex& balls) {
-  // Fixed chunks, concatenated in order: the result does not depend on the thread count.
-  constexpr std::size_t kChunk = 256;
+  KeptSeedPairs kept;
+  (void)kept.update(balls);
+  return kept.release();
+}
+
+namespace {
+
+// The balls whose triplets a change from `radius` (each ball's radius when last found; new balls
+// have none) can have changed: a changed ball itself, and every ball its old or new sphere
+// reached. A triplet is kept under its smallest ball p, and each ball that decides it (one of
+// the three, or a fourth holding a point of p's sphere) overlaps p.
+std::vector<std::uint32_t> balls_to_find_again(const BallIndex& balls, const std::vector<double>& radius) {
   const std::size_t n = balls.size();
-  std::vector<SeedPairs> chunks((n + kChunk - 1) / kChunk);
-  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t c) {
+  std::vector<char> again(n, 0);
+  std::vector<std::uint32_t> near;
+  for (std::uint32_t c = 0; c < n; ++c) {
+    const bool is_new = c >= radius.size();
+    if (!is_new && balls[c].radius == radius[c]) continue;
+    again[c] = 1;
+    near.clear();
+    // Radii only shrink; the margin keeps a tie in the tree's distances from leaving one out.
+    const double reach = (is_new ? balls[c].radius : radius[c]) * (1 + 1e-9);
+    for (int t = 0; t < 3; ++t) balls.reaching(static_cast<StratumType>(t), balls[c].site.position, reach, near);
+    for (std::uint32_t p : near) again[p] = 1;
+  }
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t p = 0; p < n; ++p) {
+    if (again[p]) out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace
+
+const SeedPairs& KeptSeedPairs::update(const BallIndex& balls) {
+  const std::size_t n = balls.size();
+  const std::vector<std::uint32_t> again = balls_to_find_again(balls, radius_);
+  found_again_ = again.size();
+  // Each ball's triplets apart, in fixed chunks: the result does not depend on the thread count.
+  constexpr std::size_t kChunk = 64;
+  std::vector<SeedPairs> fresh(again.size());
+  tbb::parallel_for(std::size_t{0}, (again.size() + kChunk - 1) / kChunk, [&](std::size_t c) {
     std::vector<std::uint32_t> near;
-    for (std::size_t p = c * kChunk; p < std::min(n, (c + 1) * kChunk); ++p) {
-      triplets_of(balls, static_cast<std::uint32_t>(p), near, chunks[c]);
+    for (std::size_t i = c * kChunk; i < std::min(again.size(), (c + 1) * kChunk); ++i) {
+      triplets_of(balls, again[i], near, fresh[i]);
     }
   });
-  SeedPairs all;
-  for (SeedPairs& chunk : chunks) {
-    all.triplets += chunk.triplets;
-    all.uncovered.insert(all.uncovered.end(), chunk.uncovered.begin(), chunk.uncovered.end());
-    std::move(chunk.half_covered.begin(), chunk.half_covered.end(), std::back_inserter(all.half_covered));
+  // The kept balls' pairs as they were, the others' found again, in ball order.
+  SeedPairs next;
+  std::vector<std::size_t> first_uncovered{0}, first_half_covered{0};
+  first_uncovered.reserve(n + 1);
+  first_half_covered.reserve(n + 1);
+  triplets_.resize(n, 0);
+  auto fresh_one = fresh.begin();
+  auto next_again = again.begin();
+  for (std::uint32_t p = 0; p < n; ++p) {
+    if (next_again != again.end() && *next_again == p) {
+      ++next_again;
+      SeedPairs& found = *fresh_one++;
+      triplets_[p] = static_cast<std::uint32_t>(found.triplets);
+      next.uncovered.insert(next.uncovered.end(), found.uncovered.begin(), found.uncovered.end());
+      std::move(found.half_covered.begin(), found.half_covered.end(), std::back_inserter(next.half_covered));
+    } else {
+      next.uncovered.insert(next.uncovered.end(), pairs_.uncovered.begin() + first_uncovered_[p],
+                            pairs_.uncovered.begin() + first_uncovered_[p + 1]);
+      std::move(pairs_.half_covered.begin() + first_half_covered_[p],
+                pairs_.half_covered.begin() + first_half_covered_[p + 1], std::back_inserter(next.half_covered));
+    }
+    next.triplets += triplets_[p];
+    first_uncovered.push_back(next.uncovered.size());
+    first_half_covered.push_back(next.half_covered.size());
   }
-  return all;
+  pairs_ = std::move(next);
+  first_uncovered_ = std::move(first_uncovered);
+  first_half_covered_ = std::move(first_half_covered);
+  radius_.resize(n);
+  for (std::uint32_t p = 0; p < n; ++p) radius_[p] = balls[p].radius;
+  return pairs_;
+}
+
+SeedPairs KeptSeedPairs::release() {
+  SeedPairs out = std::move(pairs_);
+  *this = KeptSeedPairs();  // every ball counts as new again
+  return out;
 }
 
 }  // namespace vorocrust
