@@ -387,6 +387,21 @@ class Balls(unittest.TestCase):
                 with open(os.path.join(again, "balls.csv")) as f:
                     self.assertEqual(f.read().splitlines(), rows)
 
+    def test_tets_asked_of_a_vorocrust_mesh_are_said_to_be_none(self):
+        # tets.vtu is the dual of a clipped mesh: asked for by name on a VoroCrust run, a warning
+        # says none comes; by default (every format) nothing is said.
+        said = "asks for tets (tets.vtu), the tetrahedra dual to a clipped mesh"
+        with tempfile.TemporaryDirectory() as out:
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--format", "tets,seeds")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("(--method 'clipped' makes a clipped mesh)", r.stderr)
+            self.assertIn(said, r.stderr)
+            self.assertEqual(sorted(os.listdir(out)), ["report.json", "seeds.csv"])
+        with tempfile.TemporaryDirectory() as out:
+            r = run("mesh", model("cgal_joint.off"), "-o", out, "--stop-after", "surface")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertNotIn(said, r.stderr)
+
     def test_a_scan_meshed_as_a_cad_part_gets_the_hint_naming_smooth(self):
         # The bunny at the default sharp angle: its folds would be creases. With --smooth, or for a
         # CAD part (the fandisk), no hint.

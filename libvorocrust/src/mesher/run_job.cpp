@@ -208,6 +208,20 @@ void suggest_smooth(JobResult& result, const MeshOptions& options, const Warning
   if (warn) warn(result.warnings.back());
 }
 
+// tets.vtu belongs to a clipped mesh, whose seeds on the surface make the tetrahedra fill it.
+// Asked for by name on a VoroCrust run (the default, every format, asks for all), it is said
+// that none will come, rather than the file silently missing.
+void warn_unwritten_tets(JobResult& result, const MeshOptions& options, const WarningCallback& warn) {
+  if (options.method == Method::Clipped || !options.writes(OutputFormat::Tets) ||
+      options.formats == MeshOptions::all_output_formats()) {
+    return;
+  }
+  result.warnings.push_back(
+      "warning: `formats` asks for tets (tets.vtu), the tetrahedra dual to a clipped mesh; a VoroCrust mesh has "
+      "none, so none is written (`method` 'clipped' makes a clipped mesh)");
+  if (warn) warn(result.warnings.back());
+}
+
 RunReport report_of(const Job& job) {
   RunReport report;
   report.command = job.command;
@@ -241,6 +255,7 @@ JobResult run_job(const Job& job, const ProgressCallback& progress, const Warnin
     phases.begin_own("validating");
     validate_input(result, options, warn);
     suggest_smooth(result, options, warn);
+    warn_unwritten_tets(result, options, warn);
     result.info = mesh_info(result.input);
     report.input = &result.info;
     report.validation = &result.validation;
